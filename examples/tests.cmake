@@ -1,0 +1,3 @@
+# SPDX-License-Identifier: BSD-3-Clause
+# How each example runs as a test (short arguments so the suite stays fast).
+add_test(NAME "example: fingertips" COMMAND fingertips)

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// The error types of topograsp and the run-time argument checks that throw them.
+#pragma once
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include <topograsp/core/eigen.hpp>
+
+namespace topograsp {
+
+/// Thrown for a non-finite or wrongly sized run-time input at a public entry point. The message
+/// starts with the name of the offending argument.
+class invalid_argument : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+namespace detail {
+
+[[noreturn]] inline void throw_invalid_argument(std::string_view argument, std::string_view what) {
+  std::string message(argument);
+  message += ": ";
+  message += what;
+  throw invalid_argument(message);
+}
+
+}  // namespace detail
+
+/// Throws topograsp::invalid_argument naming \p argument unless \p value is finite.
+inline void require_finite(double value, std::string_view argument) {
+  if (!std::isfinite(value)) detail::throw_invalid_argument(argument, "expected a finite number");
+}
+
+/// Throws topograsp::invalid_argument naming \p argument unless \p value is finite and > 0.
+inline void require_positive(double value, std::string_view argument) {
+  if (!std::isfinite(value) || !(value > 0.0))
+    detail::throw_invalid_argument(argument,
+                                   "expected a finite number > 0, got " + std::to_string(value));
+}
+
+/// Throws topograsp::invalid_argument naming \p argument unless every entry of \p m is finite.
+template <EigenDense D>
+void require_finite(const D& m, std::string_view argument) {
+  for (Eigen::Index j = 0; j < m.cols(); ++j)
+    for (Eigen::Index i = 0; i < m.rows(); ++i)
+      if (!std::isfinite(m(i, j)))
+        detail::throw_invalid_argument(argument, "expected finite entries, entry (" +
+                                                     std::to_string(i) + ", " + std::to_string(j) +
+                                                     ") is " + std::to_string(m(i, j)));
+}
+
+/// Throws topograsp::invalid_argument naming \p argument unless \p m has \p rows entries.
+template <EigenDense D>
+void require_size(const D& m, Eigen::Index rows, std::string_view argument) {
+  if (m.rows() != rows || m.cols() != 1)
+    detail::throw_invalid_argument(argument, "expected a vector of size " + std::to_string(rows) +
+                                                 ", got " + std::to_string(m.rows()) + "x" +
+                                                 std::to_string(m.cols()));
+}
+
+}  // namespace topograsp
