@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// winding(): the paper's winding quantity of a piecewise-linear curve around a point, and its
+/// exact gradient with respect to every vertex.
+#pragma once
+
+#include <cmath>
+#include <concepts>
+#include <cstddef>
+#include <ranges>
+#include <span>
+#include <string>
+
+#include <topograsp/core/constants.hpp>
+#include <topograsp/core/eigen.hpp>
+#include <topograsp/core/error.hpp>
+
+namespace topograsp {
+
+/// A contiguous range of Eigen::Vector3d: std::vector, std::array, std::span, a C array.
+template <class R>
+concept PointRange =
+    std::ranges::contiguous_range<R> && std::ranges::sized_range<R> &&
+    std::same_as<std::remove_cvref_t<std::ranges::range_value_t<R>>, Eigen::Vector3d>;
+
+namespace detail {
+
+/// The unsigned angle between \p a and \p b in [0, pi], as atan2(|a x b|, a . b); 0 if either
+/// vector is zero.
+[[nodiscard]] inline double angle_between(const Vec3& a, const Vec3& b) noexcept {
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+/// The angle between a and b and its gradients: d angle / d a into \p ga and d angle / d b into
+/// \p gb. Where the angle is not differentiable (a or b zero, a parallel to b) both are zero.
+inline double angle_gradient(const Vec3& a, const Vec3& b, Vec3& ga, Vec3& gb) noexcept {
+  const Vec3 n = a.cross(b);
+  const double s = n.norm(), c = a.dot(b);
+  const double theta = std::atan2(s, c);
+  const double aa = a.squaredNorm(), bb = b.squaredNorm();
+  if (!(s > 0.0) || !(aa > 0.0) || !(bb > 0.0)) {
+    ga.setZero();
+    gb.setZero();
+    return theta;
+  }
+  // theta grows when a turns away from b in their common plane: d theta / d a = -(n^ x a)/|a|^2,
+  // d theta / d b = (n^ x b)/|b|^2, with n^ the unit normal a x b / |a x b|.
+  const Vec3 nh = n / s;
+  ga = -nh.cross(a) / aa;
+  gb = nh.cross(b) / bb;
+  return theta;
+}
+
+/// winding() without checks: \p n >= 0 vertices at \p x.
+[[nodiscard]] inline double winding_unchecked(const Vec3* x, std::size_t n,
+                                              const Vec3& p) noexcept {
+  double sum = 0.0;
+  for (std::size_t i = 0; i + 1 < n; ++i) sum += angle_between(x[i] - p, x[i + 1] - p);
+  return sum / two_pi;
+}
+
+/// winding_gradient() without checks: writes d w / d x_i into g[i] (n entries) and returns w.
+inline double winding_gradient_unchecked(const Vec3* x, std::size_t n, const Vec3& p,
+                                         Vec3* g) noexcept {
+  for (std::size_t i = 0; i < n; ++i) g[i].setZero();
+  double sum = 0.0;
+  Vec3 ga, gb;
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    sum += angle_gradient(x[i] - p, x[i + 1] - p, ga, gb);
+    g[i] += ga / two_pi;
+    g[i + 1] += gb / two_pi;
+  }
+  return sum / two_pi;
+}
+
+template <PointRange R>
+void require_curve(const R& points, const Vec3& p) {
+  if (std::ranges::size(points) < 2)
+    throw_invalid_argument(
+        "points", "expected at least 2 points, got " + std::to_string(std::ranges::size(points)));
+  std::size_t i = 0;
+  for (const Eigen::Vector3d& x : points) {
+    for (int k = 0; k < 3; ++k)
+      if (!std::isfinite(x[k]))
+        throw_invalid_argument("points",
+                               "expected finite points, point " + std::to_string(i) + " is not");
+    ++i;
+  }
+  require_finite(p, "p");
+}
+
+}  // namespace detail
+
+/// The winding of the piecewise-linear curve through \p points around \p p (paper III.A).
+///
+/// \f$ w = \frac{1}{2\pi} \sum_{i=0}^{n-2} \angle(X_i - p, X_{i+1} - p) \f$, each angle in
+/// [0, pi] computed as atan2(|a x b|, a . b), which is accurate for small and nearly straight
+/// angles alike. The curve is open: to close it, repeat the first point at the end. For a closed
+/// planar curve through p's plane that winds monotonically k times around p, w = k; for a general
+/// curve w >= 0 measures how far the curve wraps around p. w is invariant under rotations,
+/// translations and uniform scalings about p, unchanged by reversing the curve, and additive
+/// under concatenation.
+///
+/// Degenerate cases: a vertex at p contributes no angle to either of its segments (so w stays
+/// finite; the curve passing through p is where w jumps). A zero-length segment contributes 0.
+///
+/// \param[in] points the vertices X_0..X_{n-1} (m), any contiguous range of Eigen::Vector3d
+/// \param[in] p the reference point (m), e.g. an object's centre of mass
+/// \return w (turns; dimensionless)
+/// \throws topograsp::invalid_argument naming "points" if there are fewer than 2 points or a
+///         point is not finite, naming "p" if p is not finite.
+template <PointRange R>
+[[nodiscard]] double winding(const R& points, const Eigen::Vector3d& p) {
+  detail::require_curve(points, p);
+  return detail::winding_unchecked(std::ranges::data(points), std::ranges::size(points), p);
+}
+
+/// The winding of the curve through \p points around \p p, with its exact gradient with respect
+/// to every vertex: gradient[i] = d w / d X_i (1/m). The gradient with respect to p is
+/// -sum_i gradient[i] (w depends on X_i - p only).
+///
+/// Where w is not differentiable (a vertex at p, two consecutive vertices in line with p) the
+/// terms of the affected angle are zero, a valid one-sided choice; everywhere else the gradient
+/// is exact.
+///
+/// \throws topograsp::invalid_argument as winding(), and naming "gradient" if its size differs
+///         from the number of points.
+template <PointRange R>
+double winding_gradient(const R& points, const Eigen::Vector3d& p,
+                        std::span<Eigen::Vector3d> gradient) {
+  detail::require_curve(points, p);
+  if (gradient.size() != std::ranges::size(points))
+    detail::throw_invalid_argument(
+        "gradient", "expected " + std::to_string(std::ranges::size(points)) + " entries, got " +
+                        std::to_string(gradient.size()));
+  return detail::winding_gradient_unchecked(std::ranges::data(points), std::ranges::size(points), p,
+                                            gradient.data());
+}
+
+}  // namespace topograsp
