@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <catch2/catch.hpp>
 
+#include <random>
+
+#include <topograsp/core/sincos.hpp>
 #include <topograsp/model/models.hpp>
 
 using namespace topograsp;
@@ -92,4 +95,19 @@ TEST_CASE("constexpr poses compose and invert exactly enough", "[model][pose]") 
     }
     for (const double x : {1e-8, 0.5, 2.0, 1e6}) CHECK(cmath::sqrt(x) == Approx(std::sqrt(x)));
   }
+}
+
+TEST_CASE("the fast sincos of the kinematics agrees with the standard library", "[core]") {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-50.0, 50.0);
+  for (int i = 0; i < 100000; ++i) {
+    const double x = i < 1000 ? (i - 500) * (pi / 4.0) : u(rng);  // includes the octant edges
+    const SinCos sc = sincos(x);
+    CHECK(std::abs(sc.s - std::sin(x)) <= 1e-15);
+    CHECK(std::abs(sc.c - std::cos(x)) <= 1e-15);
+  }
+  CHECK(sincos(0.0).s == 0.0);
+  CHECK(sincos(0.0).c == 1.0);
+  CHECK(sincos(2e5).s == std::sin(2e5));  // large arguments go to the standard library
+  CHECK(std::isnan(sincos(std::numeric_limits<double>::quiet_NaN()).s));
 }
