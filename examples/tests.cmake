@@ -1,3 +1,4 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # How each example runs as a test (short arguments so the suite stays fast).
 add_test(NAME "example: fingertips" COMMAND fingertips)
+add_test(NAME "example: custom_hand" COMMAND custom_hand)
