@@ -1,0 +1,13 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// The physics module: the rigid-body stepper (World), hand scenes, closing a hand and the shake
+/// test. See docs/stepper.md.
+#pragma once
+
+#include <topograsp/physics/contact.hpp>
+#include <topograsp/physics/mass_properties.hpp>
+#include <topograsp/physics/narrow_phase.hpp>
+#include <topograsp/physics/polytope.hpp>
+#include <topograsp/physics/rigid_body.hpp>
+#include <topograsp/physics/stepper_options.hpp>
+#include <topograsp/physics/world.hpp>

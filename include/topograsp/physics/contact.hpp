@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// ContactPoint and Manifold: the contacts between one pair of shapes and the solver's state for
+/// them (accumulated impulses for warm starting, effective masses, softness).
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include <topograsp/physics/detail/math.hpp>
+
+namespace topograsp {
+
+/// One contact point and its solver state.
+template <class S = double>
+struct ContactPoint {
+  using V3 = physics_detail::V3<S>;
+  V3 point = V3::Zero();    ///< world point midway between the surfaces at the step's start (m)
+  V3 normal = V3::UnitZ();  ///< unit, from body A into body B
+  S separation = S(0);      ///< at the step's start (m); negative when overlapping
+  std::uint32_t id = 0;     ///< feature id used to match points between steps (warm starting)
+  /// Total normal impulse over the last step (N s): divide by the time step for the force.
+  S step_impulse = S(0);
+  /// Accumulated normal impulse of the current sub-step (N s), warm-started.
+  S normal_impulse = S(0);
+  Eigen::Matrix<S, 2, 1> tangent_impulse = Eigen::Matrix<S, 2, 1>::Zero();  ///< along t1, t2
+  V3 friction_impulse = V3::Zero();  ///< tangent_impulse in world axes, carried between steps
+
+  // Solver data, set up at the start of each step.
+  V3 anchor_a = V3::Zero(), anchor_b = V3::Zero();  ///< from each centre of mass (world)
+  V3 local_a = V3::Zero(), local_b = V3::Zero();    ///< the same in body axes
+  V3 t1 = V3::UnitX(), t2 = V3::UnitY();            ///< tangent basis
+  S adjusted_separation = S(0);
+  S normal_mass = S(0);
+  Eigen::Matrix<S, 2, 2> tangent_mass = Eigen::Matrix<S, 2, 2>::Zero();
+  S tangent_mass_iso = S(0);  ///< 2 / trace of the tangent effective-mass inverse
+  S bias_rate = S(0), mass_scale = S(1), impulse_scale = S(0), max_push = S(0);
+};
+
+/// The contacts of one pair of shapes (a "manifold"), at most 4 points, and the pair's torsional
+/// friction row.
+template <class S = double>
+struct Manifold {
+  int body_a = -1, body_b = -1;          ///< body indices in the World
+  int collider_a = -1, collider_b = -1;  ///< shape indices in the World
+  int count = 0;                         ///< points in use
+  std::array<ContactPoint<S>, 4> points{};
+  S friction = S(0);  ///< the pair's Coulomb coefficient
+  bool hand = false;  ///< one body is kinematic: physical stiffness, torsional friction
+  physics_detail::V3<S> twist_axis = physics_detail::V3<S>::UnitZ();
+  S twist_mass = S(0);     ///< 0 when the pair has no torsional friction this step
+  S twist_impulse = S(0);  ///< accumulated torsional impulse (N m s)
+};
+
+}  // namespace topograsp

@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// Mass, centre of mass and inertia of shapes and of composite bodies made of shapes.
+#pragma once
+
+#include <span>
+#include <string>
+
+#include <topograsp/core/constants.hpp>
+#include <topograsp/core/error.hpp>
+#include <topograsp/model/spec.hpp>
+#include <topograsp/physics/detail/math.hpp>
+
+namespace topograsp {
+
+/// The mass properties of a rigid body in its own frame.
+template <class S = double>
+struct MassProperties {
+  S mass = S(0);                                              ///< kg
+  physics_detail::V3<S> com = physics_detail::V3<S>::Zero();  ///< centre of mass (m, body frame)
+  /// Inertia tensor about the centre of mass, in body-frame axes (kg m^2).
+  physics_detail::M3<S> inertia = physics_detail::M3<S>::Zero();
+};
+
+/// Throws topograsp::invalid_argument naming \p argument unless \p s has positive, finite sizes
+/// (a capsule's half length may be 0) and a finite pose with an orthonormal rotation.
+inline void require_valid_shape(const ShapeSpec& s, std::string_view argument) {
+  const std::string arg(argument);
+  switch (s.type) {
+    case ShapeType::sphere:
+      require_positive(s.size[0], arg + ".size[0] (sphere radius)");
+      break;
+    case ShapeType::capsule:
+      require_positive(s.size[0], arg + ".size[0] (capsule radius)");
+      require_finite(s.size[1], arg + ".size[1] (capsule half length)");
+      if (s.size[1] < 0.0)
+        detail::throw_invalid_argument(arg + ".size[1] (capsule half length)",
+                                       "expected >= 0, got " + std::to_string(s.size[1]));
+      break;
+    case ShapeType::box:
+      for (std::size_t k = 0; k < 3; ++k)
+        require_positive(s.size[k], arg + ".size[" + std::to_string(k) + "] (box half extent)");
+      break;
+    case ShapeType::cylinder:
+      require_positive(s.size[0], arg + ".size[0] (cylinder radius)");
+      require_positive(s.size[1], arg + ".size[1] (cylinder half height)");
+      break;
+  }
+  for (double v : s.pose.R) require_finite(v, arg + ".pose");
+  for (double v : s.pose.p) require_finite(v, arg + ".pose");
+  const Mat3 R = s.pose.rotation();
+  if (!(R.transpose() * R).isApprox(Mat3::Identity(), 1e-6) || R.determinant() < 0.0)
+    detail::throw_invalid_argument(arg + ".pose", "expected a rotation (orthonormal, det +1)");
+}
+
+/// The mass properties of one shape of uniform \p density (kg/m^3), in the frame of its link.
+/// Capsule: a cylinder plus two hemispheres (each about its own centroid at 3r/8 from the flat
+/// face, moved by the parallel-axis theorem). Cylinder and capsule axes are the shape's local z.
+template <class S = double>
+[[nodiscard]] MassProperties<S> shape_mass_properties(const ShapeSpec& s, double density) {
+  using physics_detail::M3;
+  using physics_detail::V3;
+  const double r = s.size[0];
+  double m = 0.0, ixx = 0.0, iyy = 0.0, izz = 0.0;
+  switch (s.type) {
+    case ShapeType::sphere:
+      m = 4.0 / 3.0 * pi * r * r * r * density;
+      ixx = iyy = izz = 0.4 * m * r * r;
+      break;
+    case ShapeType::box: {
+      const double x = s.size[0], y = s.size[1], z = s.size[2];
+      m = 8.0 * x * y * z * density;
+      // A full side of 2h: m (a^2 + b^2) / 12 = m (h_a^2 + h_b^2) / 3.
+      ixx = m * (y * y + z * z) / 3.0;
+      iyy = m * (x * x + z * z) / 3.0;
+      izz = m * (x * x + y * y) / 3.0;
+      break;
+    }
+    case ShapeType::cylinder: {
+      const double h = s.size[1];
+      m = pi * r * r * 2.0 * h * density;
+      izz = 0.5 * m * r * r;
+      ixx = iyy = m * (3.0 * r * r + 4.0 * h * h) / 12.0;
+      break;
+    }
+    case ShapeType::capsule: {
+      const double h = s.size[1];
+      const double mc = pi * r * r * 2.0 * h * density;
+      const double ms = 4.0 / 3.0 * pi * r * r * r * density;
+      m = mc + ms;
+      izz = 0.5 * mc * r * r + 0.4 * ms * r * r;
+      // Hemispheres: (83/320) m r^2 about their centroid, which sits h + 3r/8 from the centre;
+      // 83/320 + (3/8)^2 = 2/5, hence 2r^2/5 + h^2 + 3hr/4.
+      ixx = iyy =
+          mc * (3.0 * r * r + 4.0 * h * h) / 12.0 + ms * (0.4 * r * r + h * h + 0.75 * h * r);
+      break;
+    }
+  }
+  MassProperties<S> out;
+  out.mass = static_cast<S>(m);
+  out.com = physics_detail::translation_of<S>(s.pose);
+  const M3<S> R = physics_detail::rotation_of<S>(s.pose);
+  const V3<S> diag(static_cast<S>(ixx), static_cast<S>(iyy), static_cast<S>(izz));
+  out.inertia = R * diag.asDiagonal() * R.transpose();
+  return out;
+}
+
+/// The mass properties of a body made of \p shapes (all in the body frame). Give either a
+/// \p density (kg/m^3, \p mass <= 0) or a total \p mass (kg, then density only sets the ratio
+/// between shapes and any positive value gives the same result). Overlapping shapes count twice.
+/// Throws topograsp::invalid_argument for an empty shape list, a bad shape, or when neither a
+/// positive finite mass nor a positive finite density is given.
+template <class S = double>
+[[nodiscard]] MassProperties<S> body_mass_properties(std::span<const ShapeSpec> shapes, double mass,
+                                                     double density) {
+  using physics_detail::M3;
+  using physics_detail::V3;
+  if (shapes.empty()) detail::throw_invalid_argument("shapes", "expected at least one shape");
+  for (std::size_t i = 0; i < shapes.size(); ++i)
+    require_valid_shape(shapes[i], "shapes[" + std::to_string(i) + "]");
+  if (mass > 0.0 || !std::isfinite(mass)) {
+    require_positive(mass, "mass");
+    density = 1.0;
+  } else if (mass == 0.0) {
+    require_positive(density, "density");
+  } else {
+    require_positive(mass, "mass");
+  }
+  MassProperties<S> total;
+  V3<S> moment = V3<S>::Zero();
+  for (const ShapeSpec& s : shapes) {
+    const MassProperties<S> p = shape_mass_properties<S>(s, density);
+    total.mass += p.mass;
+    moment += p.mass * p.com;
+  }
+  total.com = moment / total.mass;
+  for (const ShapeSpec& s : shapes) {
+    const MassProperties<S> p = shape_mass_properties<S>(s, density);
+    const V3<S> d = p.com - total.com;
+    // Parallel-axis theorem: I_c + m (|d|^2 1 - d d^T).
+    total.inertia += p.inertia + p.mass * (d.squaredNorm() * M3<S>::Identity() - d * d.transpose());
+  }
+  if (mass > 0.0) {
+    const S scale = static_cast<S>(mass) / total.mass;
+    total.mass = static_cast<S>(mass);
+    total.inertia *= scale;
+  }
+  return total;
+}
+
+}  // namespace topograsp

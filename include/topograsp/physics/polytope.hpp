@@ -1,0 +1,171 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// Polytope: the convex polyhedron of a box or of a cylinder (an N-gon prism), used by the
+/// box-box, box-cylinder and cylinder-cylinder contacts.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <topograsp/core/constants.hpp>
+#include <topograsp/model/spec.hpp>
+#include <topograsp/physics/detail/math.hpp>
+
+namespace topograsp {
+
+/// Sides of the prism that stands in for a cylinder in contacts with boxes and other cylinders.
+/// Its vertices lie on the cylinder, so the prism is inside the cylinder by at most
+/// r (1 - cos(pi / 16)) = 1.9 % of the radius between vertices. Contacts of a cylinder with
+/// spheres and capsules use the exact cylinder.
+inline constexpr int cylinder_prism_sides = 16;
+
+/// A convex polyhedron in the frame of its shape: vertices, faces (outward unit normal, offset
+/// and a counter-clockwise vertex loop seen from outside), edges and their distinct directions.
+/// Fixed capacity, no heap memory.
+template <class S = double>
+struct Polytope {
+  static constexpr int max_vertices = 2 * cylinder_prism_sides;
+  static constexpr int max_faces = cylinder_prism_sides + 2;
+  static constexpr int max_face_indices = 6 * cylinder_prism_sides;
+  static constexpr int max_edges = 3 * cylinder_prism_sides;
+  static constexpr int max_directions = cylinder_prism_sides / 2 + 1;
+
+  int n_vertices = 0, n_faces = 0, n_edges = 0, n_directions = 0;
+  bool prism = false;  ///< a cylinder's prism: direction 0 is the axis, the others cap edges
+  std::array<physics_detail::V3<S>, max_vertices> vertices{};
+  std::array<physics_detail::V3<S>, max_faces> normals{};
+  std::array<S, max_faces> offsets{};  ///< normal . x = offset on the face plane
+  std::array<int, max_faces> face_begin{}, face_size{};
+  std::array<int, max_face_indices> face_indices{};
+  std::array<std::array<int, 2>, max_edges> edges{};
+  std::array<int, max_edges> edge_direction{};  ///< index into directions
+  std::array<physics_detail::V3<S>, max_directions> directions{};
+};
+
+namespace physics_detail {
+
+template <class S>
+void add_face(Polytope<S>& P, const V3<S>& n, const int* ids_in, int k) {
+  // Adds the face with outward normal n through the k vertices ids_in, sorted into a loop.
+  std::array<int, Polytope<S>::max_vertices> ids{};
+  V3<S> c = V3<S>::Zero();
+  for (int i = 0; i < k; ++i) {
+    ids[static_cast<std::size_t>(i)] = ids_in[i];
+    c += P.vertices[static_cast<std::size_t>(ids_in[i])];
+  }
+  c /= static_cast<S>(k);
+  V3<S> t1, t2;
+  tangent_basis<S>(n, t1, t2);
+  const auto angle = [&](int i) {
+    const V3<S> d = P.vertices[static_cast<std::size_t>(i)] - c;
+    return std::atan2(d.dot(t2), d.dot(t1));
+  };
+  std::sort(ids.begin(), ids.begin() + k, [&](int a, int b) { return angle(a) < angle(b); });
+  const auto f = static_cast<std::size_t>(P.n_faces++);
+  P.normals[f] = n;
+  P.offsets[f] = n.dot(P.vertices[static_cast<std::size_t>(ids[0])]);
+  P.face_begin[f] = f == 0 ? 0 : P.face_begin[f - 1] + P.face_size[f - 1];
+  P.face_size[f] = k;
+  for (int i = 0; i < k; ++i)
+    P.face_indices[static_cast<std::size_t>(P.face_begin[f] + i)] =
+        ids[static_cast<std::size_t>(i)];
+}
+
+// Collects the edges of the faces (each once) and their distinct directions (up to sign).
+template <class S>
+void finish_edges(Polytope<S>& P) {
+  for (int f = 0; f < P.n_faces; ++f) {
+    const auto fu = static_cast<std::size_t>(f);
+    for (int i = 0; i < P.face_size[fu]; ++i) {
+      int a = P.face_indices[static_cast<std::size_t>(P.face_begin[fu] + i)];
+      int b =
+          P.face_indices[static_cast<std::size_t>(P.face_begin[fu] + (i + 1) % P.face_size[fu])];
+      if (a > b) std::swap(a, b);
+      bool seen = false;
+      for (int e = 0; e < P.n_edges && !seen; ++e)
+        seen = P.edges[static_cast<std::size_t>(e)] == std::array<int, 2>{a, b};
+      if (seen) continue;
+      const auto e = static_cast<std::size_t>(P.n_edges++);
+      P.edges[e] = {a, b};
+      const V3<S> d =
+          (P.vertices[static_cast<std::size_t>(b)] - P.vertices[static_cast<std::size_t>(a)])
+              .normalized();
+      int dir = -1;
+      for (int k = 0; k < P.n_directions && dir < 0; ++k)
+        if (std::abs(P.directions[static_cast<std::size_t>(k)].dot(d)) > S(1) - S(1e-5)) dir = k;
+      if (dir < 0) {
+        dir = P.n_directions++;
+        P.directions[static_cast<std::size_t>(dir)] = d;
+      }
+      P.edge_direction[e] = dir;
+    }
+  }
+}
+
+}  // namespace physics_detail
+
+/// The polytope of a box with half extents \p h, centred at the origin.
+template <class S = double>
+[[nodiscard]] Polytope<S> box_polytope(const physics_detail::V3<S>& h) {
+  using physics_detail::V3;
+  Polytope<S> P;
+  for (int i = 0; i < 8; ++i)
+    P.vertices[static_cast<std::size_t>(i)] =
+        V3<S>((i & 1) ? h.x() : -h.x(), (i & 2) ? h.y() : -h.y(), (i & 4) ? h.z() : -h.z());
+  P.n_vertices = 8;
+  for (int k = 0; k < 3; ++k)
+    for (int s = 0; s < 2; ++s) {
+      V3<S> n = V3<S>::Zero();
+      n[k] = s ? S(1) : S(-1);
+      std::array<int, 4> ids{};
+      int c = 0;
+      for (int i = 0; i < 8; ++i)
+        if (((i >> k) & 1) == s) ids[static_cast<std::size_t>(c++)] = i;
+      physics_detail::add_face<S>(P, n, ids.data(), 4);
+    }
+  // Directions first along x, y, z so that direction k is the axis k.
+  P.n_directions = 3;
+  P.directions[0] = V3<S>::UnitX();
+  P.directions[1] = V3<S>::UnitY();
+  P.directions[2] = V3<S>::UnitZ();
+  physics_detail::finish_edges<S>(P);
+  return P;
+}
+
+/// The polytope of a cylinder of \p radius and \p half_height along z: a prism with
+/// cylinder_prism_sides sides whose vertices lie on the cylinder.
+template <class S = double>
+[[nodiscard]] Polytope<S> cylinder_polytope(S radius, S half_height) {
+  using physics_detail::V3;
+  constexpr int n = cylinder_prism_sides;
+  Polytope<S> P;
+  P.prism = true;
+  for (int i = 0; i < n; ++i) {
+    const double a = two_pi * static_cast<double>(i) / n;
+    const S c = static_cast<S>(std::cos(a)), s = static_cast<S>(std::sin(a));
+    P.vertices[static_cast<std::size_t>(i)] = V3<S>(radius * c, radius * s, -half_height);
+    P.vertices[static_cast<std::size_t>(i + n)] = V3<S>(radius * c, radius * s, half_height);
+  }
+  P.n_vertices = 2 * n;
+  std::array<int, n> bottom{}, top{};
+  for (int i = 0; i < n; ++i) {
+    bottom[static_cast<std::size_t>(i)] = i;
+    top[static_cast<std::size_t>(i)] = i + n;
+  }
+  physics_detail::add_face<S>(P, V3<S>(S(0), S(0), S(-1)), bottom.data(), n);
+  physics_detail::add_face<S>(P, V3<S>(S(0), S(0), S(1)), top.data(), n);
+  for (int i = 0; i < n; ++i) {
+    const int j = (i + 1) % n;
+    const double a = two_pi * (static_cast<double>(i) + 0.5) / n;
+    const V3<S> normal(static_cast<S>(std::cos(a)), static_cast<S>(std::sin(a)), S(0));
+    const int ids[4] = {i, j, i + n, j + n};
+    physics_detail::add_face<S>(P, normal, ids, 4);
+  }
+  P.n_directions = 1;
+  P.directions[0] = V3<S>::UnitZ();
+  physics_detail::finish_edges<S>(P);
+  return P;
+}
+
+}  // namespace topograsp

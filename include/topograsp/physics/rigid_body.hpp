@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// RigidBody: the state of one body of a World (dynamic, kinematic or static) and BodyDesc, what a
+/// body is built from.
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include <topograsp/core/pose.hpp>
+#include <topograsp/model/spec.hpp>
+#include <topograsp/physics/detail/math.hpp>
+
+namespace topograsp {
+
+/// How a body moves.
+enum class BodyType : std::uint8_t {
+  fixed,      ///< never moves (the ground); infinite mass
+  kinematic,  ///< moved to target poses (hand links); infinite mass, pushes dynamic bodies
+  dynamic,    ///< moved by gravity and contacts (the object)
+};
+
+/// What World::add_body() builds a body from.
+struct BodyDesc {
+  BodyType type = BodyType::dynamic;
+  /// The body frame in the world; the shapes' poses are in this frame.
+  Pose pose{};
+  /// The shapes (ShapeSpec::link is ignored); at least one. Copied by add_body().
+  std::span<const ShapeSpec> shapes{};
+  /// Total mass (kg) of a dynamic body; if 0, the mass comes from density.
+  double mass = 0.0;
+  /// Density (kg/m^3) of a dynamic body when mass is 0. Default: water.
+  double density = 1000.0;
+  /// Coulomb friction coefficient; a pair of bodies uses sqrt(mu_a mu_b). Default 0.5.
+  double friction = 0.5;
+};
+
+/// The state of one body. The position x is the centre of mass; the body frame (whose origin
+/// the shapes and BodyDesc::pose refer to) is at x - R local_com.
+template <class S = double>
+struct RigidBody {
+  using V3 = physics_detail::V3<S>;
+  using M3 = physics_detail::M3<S>;
+
+  BodyType type = BodyType::dynamic;
+  V3 x = V3::Zero();                                                ///< centre of mass, world (m)
+  physics_detail::Quat<S> q = physics_detail::Quat<S>::Identity();  ///< orientation
+  M3 R = M3::Identity();                                            ///< rotation matrix of q
+  V3 v = V3::Zero();                                                ///< linear velocity of x (m/s)
+  V3 w = V3::Zero();                  ///< angular velocity, world (rad/s)
+  V3 local_com = V3::Zero();          ///< centre of mass in the body frame
+  S mass = S(0), inv_mass = S(0);     ///< kg, 1/kg (0 if not dynamic)
+  M3 inertia = M3::Zero();            ///< about the centre of mass, body axes (kg m^2)
+  M3 inv_inertia_local = M3::Zero();  ///< its inverse
+  M3 inv_inertia = M3::Zero();        ///< inverse inertia in world axes
+  S friction = S(0.5);
+  int first_collider = 0, n_colliders = 0;
+
+  /// The origin of the body frame in the world (m).
+  [[nodiscard]] V3 origin() const noexcept { return x - R * local_com; }
+  /// The body frame as an isometry (double precision).
+  [[nodiscard]] Eigen::Isometry3d pose() const noexcept {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.linear() = R.template cast<double>();
+    T.translation() = origin().template cast<double>();
+    return T;
+  }
+  /// Kinetic energy (J).
+  [[nodiscard]] S kinetic_energy() const noexcept {
+    if (type != BodyType::dynamic) return S(0);
+    return S(0.5) * mass * v.squaredNorm() + S(0.5) * w.dot(R * inertia * R.transpose() * w);
+  }
+};
+
+}  // namespace topograsp

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// StepperOptions: every parameter of the rigid-body stepper, each with its default and unit.
+#pragma once
+
+#include <array>
+
+#include <topograsp/core/constants.hpp>
+
+namespace topograsp {
+
+/// The parameters of a World: time step, solver, contact softness and friction. Every field has a
+/// documented default; default_stepper_options() returns them. Units are SI.
+///
+/// Contacts come in two kinds. Contacts between a kinematic body (a hand link) and a dynamic body
+/// (the object) are physical spring-dampers: the force is hand_stiffness times the overlap, so a
+/// position-controlled finger squeezes with a force that does not depend on the object's mass.
+/// Every other contact (dynamic-dynamic, dynamic-static) is a "rigid" soft contact in the sense of
+/// Box2D v3: its stiffness is given as a frequency that scales with the effective mass, so it
+/// behaves the same for a 10 g and a 10 kg body.
+struct StepperOptions {
+  /// The fixed time step (s). Default 1/60 s, the shake test's step.
+  double time_step = 1.0 / 60.0;
+  /// Sub-steps per step: each integrates velocities, warm starts, solves with bias, integrates
+  /// positions and relaxes without bias. More sub-steps make stiff contacts and stacks more
+  /// accurate at a linear cost. Default 4.
+  int substeps = 4;
+  /// Gravity in the world frame (m/s^2). Default (0, 0, -9.80665).
+  std::array<double, 3> gravity{0.0, 0.0, -standard_gravity};
+
+  /// Stiffness of rigid soft contacts as a frequency (Hz); capped at a quarter of the sub-step
+  /// rate, where the implicit soft constraint stops being accurate. Default 30 Hz.
+  double contact_hertz = 30.0;
+  /// Damping ratio of rigid soft contacts (1 = critical). Box2D's default of 10 (heavily
+  /// over-damped) keeps resting contacts from bouncing. Default 10.
+  double contact_damping_ratio = 10.0;
+  /// The largest speed (m/s) at which a rigid contact pushes overlapping bodies apart, so that a
+  /// deep overlap never explodes. Default 3 m/s.
+  double contact_push_max_speed = 3.0;
+
+  /// Stiffness (N/m) of a contact between a kinematic and a dynamic body, per pair of shapes,
+  /// shared evenly among the pair's contact points: the steady normal force is hand_stiffness
+  /// times the overlap. Default 2000 N/m (2 N per mm of squeeze, a soft-fingertip value: the SDH's
+  /// rubber pads and a human fingertip both give about 1 to 5 N/mm).
+  double hand_stiffness = 2000.0;
+  /// Damping ratio of those contacts relative to the contact's effective mass (1 = critical);
+  /// the damping coefficient is 2 zeta sqrt(k m_eff) (N s/m). Default 1.
+  double hand_damping_ratio = 1.0;
+  /// The largest speed (m/s) at which a hand contact pushes the object out of an overlap.
+  /// Default 1 m/s.
+  double hand_push_max_speed = 1.0;
+  /// Radius (m) of the torsional friction of hand contacts (a soft-finger model): each contact
+  /// pair resists spinning about its normal with a torque of at most mu * radius * normal force.
+  /// Without it two fingertips cannot stop an object swinging about the line between them.
+  /// 0 disables it. Default 0.003 m (two thirds of a 4.5 mm contact patch).
+  double torsional_friction_radius = 0.003;
+
+  /// Contacts are created for pairs whose surfaces are closer than this distance (m), so that the
+  /// solver can stop an approach within one step ("speculative" contacts); they push only if the
+  /// gap would close within the sub-step. Default 0.005 m.
+  double speculative_distance = 0.005;
+  /// A dynamic body faster than this (m/s or rad/s) or with a non-finite state ends the run with
+  /// Status::numerical_issue: the step is undone and the world stops. Default 100.
+  double max_speed = 100.0;
+  /// Linear damping (1/s) of dynamic bodies: v *= 1 / (1 + h * damping) each sub-step. Default 0.
+  double linear_damping = 0.0;
+  /// Angular damping (1/s) of dynamic bodies, like linear_damping. Default 0.
+  double angular_damping = 0.0;
+};
+
+/// The default options (the field initialisers of StepperOptions).
+[[nodiscard]] inline StepperOptions default_stepper_options() noexcept { return {}; }
+
+}  // namespace topograsp

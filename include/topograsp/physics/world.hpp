@@ -1,0 +1,656 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// World: the rigid-body stepper. Bodies made of shapes, contacts between them, and a sub-stepped
+/// soft-step solver with warm starting, circular friction cones and torsional friction.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <topograsp/core/error.hpp>
+#include <topograsp/core/status.hpp>
+#include <topograsp/physics/contact.hpp>
+#include <topograsp/physics/mass_properties.hpp>
+#include <topograsp/physics/narrow_phase.hpp>
+#include <topograsp/physics/polytope.hpp>
+#include <topograsp/physics/rigid_body.hpp>
+#include <topograsp/physics/stepper_options.hpp>
+
+namespace topograsp {
+
+/// A shape attached to a body of a World.
+template <class S = double>
+struct Collider {
+  int body = -1;
+  ShapeType type = ShapeType::sphere;
+  physics_detail::V3<S> size = physics_detail::V3<S>::Zero();         ///< as ShapeSpec::size
+  physics_detail::M3<S> local_R = physics_detail::M3<S>::Identity();  ///< in body axes
+  physics_detail::V3<S> local_p = physics_detail::V3<S>::Zero();      ///< from the centre of mass
+  S bounding_radius = S(0);  ///< of a sphere about the shape's centre that contains it (m)
+  int polytope = -1;         ///< index into World's polytopes (boxes and cylinders)
+  physics_detail::M3<S> R = physics_detail::M3<S>::Identity();  ///< world rotation (last step)
+  physics_detail::V3<S> p = physics_detail::V3<S>::Zero();      ///< world position (last step)
+  ShapeSpec spec{};  ///< the shape as given, in the body frame
+};
+
+/// The rigid-body stepper over the scalar type \p S (double; float compiles and runs).
+///
+/// Build a scene with add_body(); then call step() at the fixed time step. Once built, step()
+/// allocates nothing: every contact slot (one per pair of shapes that can touch) exists from
+/// add_body() on. One step:
+///  1. kinematic bodies get the velocity that reaches their target pose in one step;
+///  2. the narrow phase finds up to 4 contacts per pair of shapes (including speculative ones
+///     closer than StepperOptions::speculative_distance) and matches them by feature id to the
+///     previous step's, to warm start them;
+///  3. for each of StepperOptions::substeps sub-steps of h = dt / substeps: integrate velocities
+///     (gravity), warm start, solve contacts with a soft position bias, integrate positions
+///     (semi-implicit Euler; rotations by the exact exponential), relax contacts without bias
+///     (the "soft step" of Box2D v3);
+///  4. kinematic bodies are placed exactly at their targets; a non-finite state or a speed above
+///     StepperOptions::max_speed undoes the step and ends the run with Status::numerical_issue.
+///
+/// Limits: no restitution, no joints between dynamic bodies, no gyroscopic torque (bodies spin
+/// about a fixed axis in the absence of contacts), no sleeping, no broad phase beyond
+/// bounding-sphere tests of the precomputed shape pairs (fine for tens of shapes).
+template <class S = double>
+class World {
+ public:
+  using V3 = physics_detail::V3<S>;
+  using M3 = physics_detail::M3<S>;
+
+  /// An empty world. Throws topograsp::invalid_argument if an option is out of range (a
+  /// non-positive time step, fewer than 1 sub-step, a negative stiffness, a non-finite value).
+  explicit World(const StepperOptions& options = {}) : options_(options) {
+    require_positive(options.time_step, "options.time_step");
+    if (options.substeps < 1)
+      detail::throw_invalid_argument("options.substeps",
+                                     "expected >= 1, got " + std::to_string(options.substeps));
+    for (std::size_t k = 0; k < 3; ++k) require_finite(options.gravity[k], "options.gravity");
+    require_positive(options.contact_hertz, "options.contact_hertz");
+    require_non_negative(options.contact_damping_ratio, "options.contact_damping_ratio");
+    require_positive(options.contact_push_max_speed, "options.contact_push_max_speed");
+    require_non_negative(options.hand_stiffness, "options.hand_stiffness");
+    require_non_negative(options.hand_damping_ratio, "options.hand_damping_ratio");
+    require_positive(options.hand_push_max_speed, "options.hand_push_max_speed");
+    require_non_negative(options.torsional_friction_radius, "options.torsional_friction_radius");
+    require_non_negative(options.speculative_distance, "options.speculative_distance");
+    require_positive(options.max_speed, "options.max_speed");
+    require_non_negative(options.linear_damping, "options.linear_damping");
+    require_non_negative(options.angular_damping, "options.angular_damping");
+    gravity_ = V3(static_cast<S>(options.gravity[0]), static_cast<S>(options.gravity[1]),
+                  static_cast<S>(options.gravity[2]));
+  }
+
+  /// Adds a body and returns its index. Allocates (the body, its shapes and the contact slots of
+  /// every pair it can form). Throws topograsp::invalid_argument naming the argument for no
+  /// shapes, a non-positive or non-finite size, mass, density or friction, or a non-finite pose.
+  int add_body(const BodyDesc& desc) {
+    if (desc.shapes.empty())
+      detail::throw_invalid_argument("desc.shapes", "expected at least one shape");
+    for (std::size_t i = 0; i < desc.shapes.size(); ++i)
+      require_valid_shape(desc.shapes[i], "desc.shapes[" + std::to_string(i) + "]");
+    require_pose(desc.pose, "desc.pose");
+    require_non_negative(desc.friction, "desc.friction");
+    RigidBody<S> b;
+    b.type = desc.type;
+    b.friction = static_cast<S>(desc.friction);
+    const M3 R0 = physics_detail::rotation_of<S>(desc.pose);
+    const V3 p0 = physics_detail::translation_of<S>(desc.pose);
+    b.q = physics_detail::Quat<S>(R0).normalized();
+    b.R = b.q.toRotationMatrix();
+    if (desc.type == BodyType::dynamic) {
+      const MassProperties<S> mp = body_mass_properties<S>(desc.shapes, desc.mass, desc.density);
+      b.mass = mp.mass;
+      b.inv_mass = S(1) / mp.mass;
+      b.local_com = mp.com;
+      b.inertia = mp.inertia;
+      b.inv_inertia_local = mp.inertia.inverse();
+      b.inv_inertia = b.R * b.inv_inertia_local * b.R.transpose();
+    }
+    b.x = p0 + b.R * b.local_com;
+    b.first_collider = static_cast<int>(colliders_.size());
+    b.n_colliders = static_cast<int>(desc.shapes.size());
+    const int index = static_cast<int>(bodies_.size());
+    for (const ShapeSpec& s : desc.shapes) {
+      Collider<S> c;
+      c.body = index;
+      c.spec = s;
+      c.type = s.type;
+      c.size = V3(static_cast<S>(s.size[0]), static_cast<S>(s.size[1]), static_cast<S>(s.size[2]));
+      c.local_R = physics_detail::rotation_of<S>(s.pose);
+      c.local_p = physics_detail::translation_of<S>(s.pose) - b.local_com;
+      switch (s.type) {
+        case ShapeType::sphere:
+          c.bounding_radius = c.size[0];
+          break;
+        case ShapeType::capsule:
+          c.bounding_radius = c.size[0] + c.size[1];
+          break;
+        case ShapeType::box:
+          c.bounding_radius = c.size.norm();
+          c.polytope = static_cast<int>(polytopes_.size());
+          polytopes_.push_back(box_polytope<S>(c.size));
+          break;
+        case ShapeType::cylinder:
+          c.bounding_radius = std::sqrt(c.size[0] * c.size[0] + c.size[1] * c.size[1]);
+          c.polytope = static_cast<int>(polytopes_.size());
+          polytopes_.push_back(cylinder_polytope<S>(c.size[0], c.size[1]));
+          break;
+      }
+      colliders_.push_back(c);
+    }
+    bodies_.push_back(b);
+    targets_.push_back({b.R, b.x, false});
+    saved_.push_back({});
+    update_colliders(index);
+    // Contact slots with every earlier body that this one can touch.
+    for (int j = 0; j < index; ++j) {
+      const RigidBody<S>& o = bodies_[static_cast<std::size_t>(j)];
+      if (o.type != BodyType::dynamic && b.type != BodyType::dynamic) continue;
+      for (int ca = o.first_collider; ca < o.first_collider + o.n_colliders; ++ca)
+        for (int cb = b.first_collider; cb < b.first_collider + b.n_colliders; ++cb) {
+          Manifold<S> m;
+          m.body_a = j;
+          m.body_b = index;
+          m.collider_a = ca;
+          m.collider_b = cb;
+          m.friction = std::sqrt(o.friction * b.friction);
+          m.hand = o.type == BodyType::kinematic || b.type == BodyType::kinematic;
+          manifolds_.push_back(m);
+        }
+    }
+    return index;
+  }
+
+  /// Sets the pose that kinematic body \p body reaches at the end of the next step (its body
+  /// frame in the world); the step gives it the constant velocity that gets it there.
+  /// Throws topograsp::invalid_argument for a bad index, a non-kinematic body or a non-finite pose.
+  void set_target(int body, const Eigen::Isometry3d& pose) {
+    require_body(body, "body");
+    if (bodies_[static_cast<std::size_t>(body)].type != BodyType::kinematic)
+      detail::throw_invalid_argument("body", "expected a kinematic body");
+    require_finite(pose.matrix(), "pose");
+    Target& t = targets_[static_cast<std::size_t>(body)];
+    t.R = orthonormalized(pose.linear().template cast<S>());
+    t.p = pose.translation().template cast<S>();
+    t.active = true;
+  }
+
+  /// Moves body \p body to \p pose (its body frame in the world) at once, without velocity.
+  /// Throws topograsp::invalid_argument for a bad index or a non-finite pose.
+  void set_pose(int body, const Eigen::Isometry3d& pose) {
+    require_body(body, "body");
+    require_finite(pose.matrix(), "pose");
+    RigidBody<S>& b = bodies_[static_cast<std::size_t>(body)];
+    b.R = orthonormalized(pose.linear().template cast<S>());
+    b.q = physics_detail::Quat<S>(b.R).normalized();
+    b.R = b.q.toRotationMatrix();
+    b.x = pose.translation().template cast<S>() + b.R * b.local_com;
+    if (b.type == BodyType::dynamic) b.inv_inertia = b.R * b.inv_inertia_local * b.R.transpose();
+    targets_[static_cast<std::size_t>(body)] = {b.R, b.x, false};
+    update_colliders(body);
+  }
+
+  /// Sets the velocity of body \p body: \p v of its centre of mass (m/s) and \p w (rad/s), both
+  /// in the world frame. Ignored for fixed bodies. Throws for a bad index or non-finite values.
+  void set_velocity(int body, const Eigen::Vector3d& v, const Eigen::Vector3d& w) {
+    require_body(body, "body");
+    require_finite(v, "v");
+    require_finite(w, "w");
+    RigidBody<S>& b = bodies_[static_cast<std::size_t>(body)];
+    if (b.type == BodyType::fixed) return;
+    b.v = v.template cast<S>();
+    b.w = w.template cast<S>();
+  }
+
+  /// Sets gravity (m/s^2, world frame). Throws topograsp::invalid_argument for non-finite values.
+  void set_gravity(const Eigen::Vector3d& g) {
+    require_finite(g, "g");
+    gravity_ = g.template cast<S>();
+  }
+  [[nodiscard]] V3 gravity() const noexcept { return gravity_; }
+
+  /// Advances the world by one time step (see the class comment). Allocates nothing. Returns
+  /// Status::success, or Status::numerical_issue when the state became non-finite or too fast; then
+  /// the step is undone (every number stays finite) and later calls do nothing and return it again.
+  Status step() noexcept {
+    if (status_ != Status::success) return status_;
+    const S dt = static_cast<S>(options_.time_step);
+    const int n_sub = options_.substeps;
+    const S h = dt / static_cast<S>(n_sub);
+    save_state();
+    drive_kinematic(dt);
+    for (int i = 0; i < static_cast<int>(bodies_.size()); ++i) update_colliders(i);
+    find_contacts();
+    prepare_contacts(h);
+    const S lin_damp = S(1) / (S(1) + h * static_cast<S>(options_.linear_damping));
+    const S ang_damp = S(1) / (S(1) + h * static_cast<S>(options_.angular_damping));
+    for (int sub = 0; sub < n_sub; ++sub) {
+      for (RigidBody<S>& b : bodies_) {
+        if (b.type != BodyType::dynamic) continue;
+        b.v = lin_damp * (b.v + h * gravity_);
+        b.w *= ang_damp;
+      }
+      warm_start();
+      solve(h, true);
+      integrate_positions(h);
+      solve(h, false);
+      for (Manifold<S>& m : manifolds_)
+        for (int k = 0; k < m.count; ++k)
+          m.points[static_cast<std::size_t>(k)].step_impulse +=
+              m.points[static_cast<std::size_t>(k)].normal_impulse;
+    }
+    finish_kinematic();
+    for (Manifold<S>& m : manifolds_)
+      for (int k = 0; k < m.count; ++k) {
+        ContactPoint<S>& c = m.points[static_cast<std::size_t>(k)];
+        c.friction_impulse = c.tangent_impulse.x() * c.t1 + c.tangent_impulse.y() * c.t2;
+      }
+    if (!state_ok()) {
+      restore_state();
+      status_ = Status::numerical_issue;
+      return status_;
+    }
+    time_ += options_.time_step;
+    ++steps_;
+    return status_;
+  }
+
+  /// The body \p i.
+  [[nodiscard]] const RigidBody<S>& body(int i) const noexcept {
+    return bodies_[static_cast<std::size_t>(i)];
+  }
+  [[nodiscard]] int body_count() const noexcept { return static_cast<int>(bodies_.size()); }
+  /// Every contact slot; those with count > 0 touched (or nearly) in the last step.
+  [[nodiscard]] std::span<const Manifold<S>> manifolds() const noexcept { return manifolds_; }
+  /// The shape \p i.
+  [[nodiscard]] const Collider<S>& collider(int i) const noexcept {
+    return colliders_[static_cast<std::size_t>(i)];
+  }
+  [[nodiscard]] int collider_count() const noexcept { return static_cast<int>(colliders_.size()); }
+
+  /// The number of contact points between bodies \p a and \p b (either order) at the last step
+  /// whose separation was at most \p max_separation (m).
+  [[nodiscard]] int contact_count(int a, int b, S max_separation = S(0)) const noexcept {
+    int n = 0;
+    for (const Manifold<S>& m : manifolds_)
+      if ((m.body_a == a && m.body_b == b) || (m.body_a == b && m.body_b == a))
+        for (int k = 0; k < m.count; ++k)
+          if (m.points[static_cast<std::size_t>(k)].separation <= max_separation) ++n;
+    return n;
+  }
+
+  /// The total normal impulse (N s) between bodies \p a and \p b over the last step.
+  [[nodiscard]] S normal_impulse(int a, int b) const noexcept {
+    S sum = S(0);
+    for (const Manifold<S>& m : manifolds_)
+      if ((m.body_a == a && m.body_b == b) || (m.body_a == b && m.body_b == a))
+        for (int k = 0; k < m.count; ++k) sum += m.points[static_cast<std::size_t>(k)].step_impulse;
+    return sum;
+  }
+
+  [[nodiscard]] const StepperOptions& options() const noexcept { return options_; }
+  [[nodiscard]] Status status() const noexcept { return status_; }
+  /// Simulated time (s) and steps taken since construction.
+  [[nodiscard]] double time() const noexcept { return time_; }
+  [[nodiscard]] long steps() const noexcept { return steps_; }
+  /// The total kinetic energy of the dynamic bodies (J).
+  [[nodiscard]] S kinetic_energy() const noexcept {
+    S e = S(0);
+    for (const RigidBody<S>& b : bodies_) e += b.kinetic_energy();
+    return e;
+  }
+
+ private:
+  struct Target {
+    M3 R;
+    V3 p;
+    bool active = false;
+  };
+  struct Saved {
+    V3 x = V3::Zero(), v = V3::Zero(), w = V3::Zero();
+    physics_detail::Quat<S> q = physics_detail::Quat<S>::Identity();
+  };
+
+  static void require_non_negative(double value, std::string_view argument) {
+    if (!std::isfinite(value) || value < 0.0)
+      detail::throw_invalid_argument(argument,
+                                     "expected a finite number >= 0, got " + std::to_string(value));
+  }
+  static void require_pose(const Pose& pose, std::string_view argument) {
+    for (double v : pose.R) require_finite(v, argument);
+    for (double v : pose.p) require_finite(v, argument);
+    const Mat3 R = pose.rotation();
+    if (!(R.transpose() * R).isApprox(Mat3::Identity(), 1e-6) || R.determinant() < 0.0)
+      detail::throw_invalid_argument(argument, "expected a rotation (orthonormal, det +1)");
+  }
+  void require_body(int body, std::string_view argument) const {
+    if (body < 0 || body >= static_cast<int>(bodies_.size()))
+      detail::throw_invalid_argument(argument, "expected a body index in [0, " +
+                                                   std::to_string(bodies_.size()) + "), got " +
+                                                   std::to_string(body));
+  }
+  static M3 orthonormalized(const M3& R) noexcept {
+    return physics_detail::Quat<S>(R).normalized().toRotationMatrix();
+  }
+
+  void update_colliders(int i) noexcept {
+    const RigidBody<S>& b = bodies_[static_cast<std::size_t>(i)];
+    for (int c = b.first_collider; c < b.first_collider + b.n_colliders; ++c) {
+      Collider<S>& col = colliders_[static_cast<std::size_t>(c)];
+      col.R.noalias() = b.R * col.local_R;
+      col.p = b.x + b.R * col.local_p;
+    }
+  }
+
+  void save_state() noexcept {
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      const RigidBody<S>& b = bodies_[i];
+      saved_[i] = {b.x, b.v, b.w, b.q};
+    }
+  }
+  void restore_state() noexcept {
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      RigidBody<S>& b = bodies_[i];
+      b.x = saved_[i].x;
+      b.v = saved_[i].v;
+      b.w = saved_[i].w;
+      b.q = saved_[i].q;
+      b.R = b.q.toRotationMatrix();
+      if (b.type == BodyType::dynamic) b.inv_inertia = b.R * b.inv_inertia_local * b.R.transpose();
+      update_colliders(static_cast<int>(i));
+    }
+  }
+  [[nodiscard]] bool state_ok() const noexcept {
+    const S vmax = static_cast<S>(options_.max_speed);
+    for (const RigidBody<S>& b : bodies_) {
+      if (b.type != BodyType::dynamic) continue;
+      if (!b.x.allFinite() || !b.v.allFinite() || !b.w.allFinite() || !b.q.coeffs().allFinite())
+        return false;
+      if (b.v.norm() > vmax || b.w.norm() > vmax) return false;
+    }
+    return true;
+  }
+
+  // Kinematic bodies: the constant velocity that reaches the target in one step.
+  void drive_kinematic(S dt) noexcept {
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      RigidBody<S>& b = bodies_[i];
+      const Target& t = targets_[i];
+      if (b.type != BodyType::kinematic || !t.active) continue;
+      b.v = (t.p - b.x) / dt;
+      b.w = physics_detail::log_rotation<S>(M3(t.R * b.R.transpose())) / dt;
+    }
+  }
+  void finish_kinematic() noexcept {
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      RigidBody<S>& b = bodies_[i];
+      Target& t = targets_[i];
+      if (b.type != BodyType::kinematic || !t.active) continue;
+      b.x = t.p;
+      b.q = physics_detail::Quat<S>(t.R).normalized();
+      b.R = b.q.toRotationMatrix();
+      b.v.setZero();
+      b.w.setZero();
+      t.active = false;
+    }
+  }
+
+  [[nodiscard]] ShapeView<S> view(const Collider<S>& c) const noexcept {
+    ShapeView<S> v;
+    v.type = c.type;
+    v.size = c.size;
+    v.R = c.R;
+    v.p = c.p;
+    v.polytope = c.polytope >= 0 ? &polytopes_[static_cast<std::size_t>(c.polytope)] : nullptr;
+    return v;
+  }
+
+  void find_contacts() noexcept {
+    const S margin = static_cast<S>(options_.speculative_distance);
+    for (Manifold<S>& m : manifolds_) {
+      const Collider<S>& ca = colliders_[static_cast<std::size_t>(m.collider_a)];
+      const Collider<S>& cb = colliders_[static_cast<std::size_t>(m.collider_b)];
+      // Keep the previous points' impulses for warm starting.
+      const int old_count = m.count;
+      std::array<std::uint32_t, 4> old_id{};
+      std::array<S, 4> old_normal{};
+      std::array<V3, 4> old_friction{};
+      for (int k = 0; k < old_count; ++k) {
+        const auto u = static_cast<std::size_t>(k);
+        old_id[u] = m.points[u].id;
+        old_normal[u] = m.points[u].normal_impulse;
+        old_friction[u] = m.points[u].friction_impulse;
+      }
+      m.count = 0;
+      const S reach = ca.bounding_radius + cb.bounding_radius + margin;
+      if ((ca.p - cb.p).squaredNorm() > reach * reach) {
+        m.twist_impulse = S(0);
+        continue;
+      }
+      ContactSet<S> cs;
+      collide<S>(view(ca), view(cb), margin, cs);
+      m.count = cs.count;
+      if (cs.count == 0) m.twist_impulse = S(0);
+      for (int k = 0; k < cs.count; ++k) {
+        const auto u = static_cast<std::size_t>(k);
+        ContactPoint<S>& c = m.points[u];
+        const ContactFeature<S>& f = cs.points[u];
+        c.point = f.point;
+        c.normal = f.normal;
+        c.separation = f.separation;
+        c.id = f.id;
+        c.normal_impulse = S(0);
+        c.friction_impulse.setZero();
+        for (int o = 0; o < old_count; ++o)
+          if (old_id[static_cast<std::size_t>(o)] == f.id) {
+            c.normal_impulse = old_normal[static_cast<std::size_t>(o)];
+            c.friction_impulse = old_friction[static_cast<std::size_t>(o)];
+            break;
+          }
+      }
+    }
+  }
+
+  void prepare_contacts(S h) noexcept {
+    // Rigid soft contacts: b2MakeSoft. With omega = 2 pi f: a1 = 2 zeta + h omega,
+    // a2 = h omega a1, a3 = 1 / (1 + a2); bias rate omega / a1, mass scale a2 a3, impulse scale a3.
+    const S pi_s = static_cast<S>(pi);
+    const S hertz = std::min(static_cast<S>(options_.contact_hertz), S(0.25) / h);
+    const S omega = S(2) * pi_s * hertz, zeta = static_cast<S>(options_.contact_damping_ratio);
+    const S a1 = S(2) * zeta + h * omega, a2 = h * omega * a1, a3 = S(1) / (S(1) + a2);
+    const S rigid_bias = omega / a1, rigid_mass = a2 * a3, rigid_impulse = a3;
+    const S k_hand = static_cast<S>(options_.hand_stiffness);
+    const S zeta_hand = static_cast<S>(options_.hand_damping_ratio);
+    const S torsion = static_cast<S>(options_.torsional_friction_radius);
+    for (Manifold<S>& m : manifolds_) {
+      if (m.count == 0) continue;
+      const RigidBody<S>& A = bodies_[static_cast<std::size_t>(m.body_a)];
+      const RigidBody<S>& B = bodies_[static_cast<std::size_t>(m.body_b)];
+      const S mA = A.inv_mass, mB = B.inv_mass;
+      const M3& iA = A.inv_inertia;
+      const M3& iB = B.inv_inertia;
+      V3 axis = V3::Zero();
+      for (int k = 0; k < m.count; ++k) {
+        ContactPoint<S>& c = m.points[static_cast<std::size_t>(k)];
+        const V3& n = c.normal;
+        axis += n;
+        c.anchor_a = c.point - A.x;
+        c.anchor_b = c.point - B.x;
+        c.local_a = A.R.transpose() * c.anchor_a;
+        c.local_b = B.R.transpose() * c.anchor_b;
+        c.adjusted_separation = c.separation - (c.anchor_b - c.anchor_a).dot(n);
+        const V3 rnA = c.anchor_a.cross(n), rnB = c.anchor_b.cross(n);
+        const S kn = mA + mB + rnA.dot(iA * rnA) + rnB.dot(iB * rnB);
+        c.normal_mass = kn > S(0) ? S(1) / kn : S(0);
+        physics_detail::tangent_basis<S>(n, c.t1, c.t2);
+        const V3 a1v = c.anchor_a.cross(c.t1), a2v = c.anchor_a.cross(c.t2);
+        const V3 b1v = c.anchor_b.cross(c.t1), b2v = c.anchor_b.cross(c.t2);
+        Eigen::Matrix<S, 2, 2> K;
+        K(0, 0) = mA + mB + a1v.dot(iA * a1v) + b1v.dot(iB * b1v);
+        K(1, 1) = mA + mB + a2v.dot(iA * a2v) + b2v.dot(iB * b2v);
+        K(0, 1) = K(1, 0) = a1v.dot(iA * a2v) + b1v.dot(iB * b2v);
+        const S det = K.determinant();
+        c.tangent_mass =
+            det > S(0) ? Eigen::Matrix<S, 2, 2>(K.inverse()) : Eigen::Matrix<S, 2, 2>::Zero();
+        c.tangent_mass_iso = K.trace() > S(0) ? S(2) / K.trace() : S(0);
+        c.tangent_impulse =
+            Eigen::Matrix<S, 2, 1>(c.friction_impulse.dot(c.t1), c.friction_impulse.dot(c.t2));
+        c.step_impulse = S(0);
+        if (m.hand && k_hand > S(0)) {
+          // Physical spring-damper (Catto, "Soft constraints", GDC 2011): with stiffness k and
+          // damping c = 2 zeta sqrt(k m_eff), gamma = 1 / (h (c + h k)) and bias rate
+          // k / (c + h k); at rest the accumulated impulse per sub-step is k d h, a force k d.
+          const S kp = k_hand / static_cast<S>(m.count);
+          const S meff = c.normal_mass;
+          const S damping = S(2) * zeta_hand * std::sqrt(kp * meff);
+          const S gamma = S(1) / (h * (damping + h * kp));
+          c.bias_rate = kp / (damping + h * kp);
+          c.mass_scale = S(1) / (S(1) + meff * gamma);
+          c.impulse_scale = meff * gamma * c.mass_scale;
+          c.max_push = static_cast<S>(options_.hand_push_max_speed);
+        } else {
+          c.bias_rate = rigid_bias;
+          c.mass_scale = rigid_mass;
+          c.impulse_scale = rigid_impulse;
+          c.max_push = static_cast<S>(options_.contact_push_max_speed);
+        }
+      }
+      m.twist_mass = S(0);
+      if (m.hand && torsion > S(0) && axis.squaredNorm() > S(1e-12)) {
+        m.twist_axis = axis.normalized();
+        const S kt = m.twist_axis.dot(iA * m.twist_axis) + m.twist_axis.dot(iB * m.twist_axis);
+        if (kt > S(0)) m.twist_mass = S(1) / kt;
+      }
+      if (m.twist_mass == S(0)) m.twist_impulse = S(0);
+    }
+  }
+
+  static void apply(RigidBody<S>& b, const V3& impulse, const V3& r) noexcept {
+    if (b.type != BodyType::dynamic) return;
+    b.v += b.inv_mass * impulse;
+    b.w += b.inv_inertia * r.cross(impulse);
+  }
+
+  void warm_start() noexcept {
+    for (Manifold<S>& m : manifolds_) {
+      if (m.count == 0) continue;
+      RigidBody<S>& A = bodies_[static_cast<std::size_t>(m.body_a)];
+      RigidBody<S>& B = bodies_[static_cast<std::size_t>(m.body_b)];
+      for (int k = 0; k < m.count; ++k) {
+        const ContactPoint<S>& c = m.points[static_cast<std::size_t>(k)];
+        const V3 P = c.normal_impulse * c.normal + c.tangent_impulse.x() * c.t1 +
+                     c.tangent_impulse.y() * c.t2;
+        apply(A, -P, c.anchor_a);
+        apply(B, P, c.anchor_b);
+      }
+      if (m.twist_mass > S(0)) {
+        const V3 L = m.twist_impulse * m.twist_axis;
+        if (A.type == BodyType::dynamic) A.w -= A.inv_inertia * L;
+        if (B.type == BodyType::dynamic) B.w += B.inv_inertia * L;
+      }
+    }
+  }
+
+  void solve(S h, bool use_bias) noexcept {
+    const S inv_h = S(1) / h;
+    for (Manifold<S>& m : manifolds_) {
+      if (m.count == 0) continue;
+      RigidBody<S>& A = bodies_[static_cast<std::size_t>(m.body_a)];
+      RigidBody<S>& B = bodies_[static_cast<std::size_t>(m.body_b)];
+      const Saved& sa = saved_[static_cast<std::size_t>(m.body_a)];
+      const Saved& sb = saved_[static_cast<std::size_t>(m.body_b)];
+      const V3 dp = (B.x - sb.x) - (A.x - sa.x);
+      const S mu = m.friction;
+      S total = S(0);
+      for (int k = 0; k < m.count; ++k) {
+        ContactPoint<S>& c = m.points[static_cast<std::size_t>(k)];
+        // Current separation from the motion since the step began (anchors rotate with bodies).
+        const V3 ra = A.R * c.local_a, rb = B.R * c.local_b;
+        const S s = (dp + rb - ra).dot(c.normal) + c.adjusted_separation;
+        S bias = S(0), mass_scale = S(1), impulse_scale = S(0);
+        if (s > S(0)) {
+          bias = s * inv_h;  // speculative: allow the gap to close, no more
+        } else if (use_bias) {
+          bias = std::max(c.bias_rate * s, -c.max_push);
+          mass_scale = c.mass_scale;
+          impulse_scale = c.impulse_scale;
+        }
+        const V3 dv = B.v + B.w.cross(c.anchor_b) - A.v - A.w.cross(c.anchor_a);
+        const S vn = dv.dot(c.normal);
+        const S impulse =
+            -c.normal_mass * mass_scale * (vn + bias) - impulse_scale * c.normal_impulse;
+        const S next = std::max(c.normal_impulse + impulse, S(0));
+        const S d = next - c.normal_impulse;
+        c.normal_impulse = next;
+        total += next;
+        const V3 P = d * c.normal;
+        apply(A, -P, c.anchor_a);
+        apply(B, P, c.anchor_b);
+      }
+      // Friction after the normal impulses, limited by them (the order of Box2D v3: with soft
+      // contacts, the biased solve lowers the normal impulse that the relax pass restores).
+      for (int k = 0; k < m.count; ++k) {
+        ContactPoint<S>& c = m.points[static_cast<std::size_t>(k)];
+        const V3 dv = B.v + B.w.cross(c.anchor_b) - A.v - A.w.cross(c.anchor_a);
+        const Eigen::Matrix<S, 2, 1> vt(dv.dot(c.t1), dv.dot(c.t2));
+        Eigen::Matrix<S, 2, 1> next = c.tangent_impulse - c.tangent_mass * vt;
+        // Circular cone: |friction| <= mu * normal. Sticking uses the full 2x2 effective mass;
+        // when sliding, its off-diagonal coupling would turn the impulse away from the slip, so
+        // the direction comes from an isotropic mass and the length from the cone.
+        const S limit = mu * c.normal_impulse;
+        if (next.squaredNorm() > limit * limit) {
+          next = c.tangent_impulse - c.tangent_mass_iso * vt;
+          const S len = next.norm();
+          next *= len > S(0) ? limit / len : S(0);
+        }
+        const Eigen::Matrix<S, 2, 1> d = next - c.tangent_impulse;
+        c.tangent_impulse = next;
+        const V3 P = d.x() * c.t1 + d.y() * c.t2;
+        apply(A, -P, c.anchor_a);
+        apply(B, P, c.anchor_b);
+      }
+      if (m.twist_mass > S(0)) {
+        // Torsional friction: |torque impulse| <= mu * radius * normal impulse.
+        const S limit = mu * static_cast<S>(options_.torsional_friction_radius) * total;
+        const S wn = (B.w - A.w).dot(m.twist_axis);
+        const S next = physics_detail::clamp<S>(m.twist_impulse - m.twist_mass * wn, -limit, limit);
+        const S d = next - m.twist_impulse;
+        m.twist_impulse = next;
+        const V3 L = d * m.twist_axis;
+        if (A.type == BodyType::dynamic) A.w -= A.inv_inertia * L;
+        if (B.type == BodyType::dynamic) B.w += B.inv_inertia * L;
+      }
+    }
+  }
+
+  void integrate_positions(S h) noexcept {
+    for (RigidBody<S>& b : bodies_) {
+      if (b.type == BodyType::fixed) continue;
+      b.x += h * b.v;
+      if (b.w.squaredNorm() > S(0)) {
+        b.q = (physics_detail::exp_rotation<S>(V3(h * b.w)) * b.q).normalized();
+        b.R = b.q.toRotationMatrix();
+        if (b.type == BodyType::dynamic)
+          b.inv_inertia = b.R * b.inv_inertia_local * b.R.transpose();
+      }
+    }
+  }
+
+  StepperOptions options_;
+  V3 gravity_ = V3::Zero();
+  std::vector<RigidBody<S>> bodies_;
+  std::vector<Target> targets_;
+  std::vector<Saved> saved_;
+  std::vector<Collider<S>> colliders_;
+  std::vector<Polytope<S>> polytopes_;
+  std::vector<Manifold<S>> manifolds_;
+  Status status_ = Status::success;
+  double time_ = 0.0;
+  long steps_ = 0;
+};
+
+}  // namespace topograsp
