@@ -4,10 +4,14 @@
 /// test. See docs/stepper.md.
 #pragma once
 
+#include <topograsp/physics/close_hand.hpp>
 #include <topograsp/physics/contact.hpp>
+#include <topograsp/physics/gravity_test.hpp>
+#include <topograsp/physics/hand_scene.hpp>
 #include <topograsp/physics/mass_properties.hpp>
 #include <topograsp/physics/narrow_phase.hpp>
 #include <topograsp/physics/polytope.hpp>
 #include <topograsp/physics/rigid_body.hpp>
+#include <topograsp/physics/shake_test.hpp>
 #include <topograsp/physics/stepper_options.hpp>
 #include <topograsp/physics/world.hpp>

@@ -304,6 +304,11 @@ class World {
     return e;
   }
 
+  /// The shape \p i as the narrow phase sees it (at its pose of the last step).
+  [[nodiscard]] ShapeView<S> shape_view(int i) const noexcept {
+    return view(colliders_[static_cast<std::size_t>(i)]);
+  }
+
  private:
   struct Target {
     M3 R;

@@ -1,0 +1,180 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// HandScene: a World holding a hand model's links as kinematic bodies, driven to the forward
+/// kinematics of joint targets, and an object made of shapes as a dynamic body.
+#pragma once
+
+#include <array>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <topograsp/kinematics/data.hpp>
+#include <topograsp/kinematics/forward.hpp>
+#include <topograsp/physics/world.hpp>
+
+namespace topograsp {
+
+/// An object to grasp: shapes in the object frame, its pose, and its mass or density.
+struct ObjectSpec {
+  std::vector<ShapeSpec> shapes;  ///< in the object frame; ShapeSpec::link is ignored
+  Pose pose{};                    ///< the object frame in the world
+  double mass = 0.0;              ///< kg; if 0 the mass comes from density
+  double density = 0.0;           ///< kg/m^3, used when mass is 0
+};
+
+/// The parameters of a HandScene beyond the stepper's.
+struct HandSceneOptions {
+  StepperOptions stepper{};  ///< time step, contact stiffness, ... (StepperOptions defaults)
+  /// Coulomb friction coefficient between the hand and the object. Default 1 (rubber-covered
+  /// fingers on plastic or wood are about 0.8 to 1.2).
+  double friction = 1.0;
+};
+
+/// A hand of model \p M (a reference to a constexpr Model) holding an object, over scalar \p S.
+///
+/// Every link with shapes becomes a kinematic body; the hand frame (the model's root link) is
+/// placed at hand_pose(). Each step() first moves every link to the forward kinematics of the
+/// joint targets at the current hand pose, then advances the World. Requires nothing else.
+template <const auto& M, class S = double>
+  requires KinematicModel<decltype(M)>
+class HandScene {
+ public:
+  using ModelType = std::remove_cvref_t<decltype(M)>;
+  static constexpr int nq = M.nq;
+  using Config = Vec<nq>;
+
+  /// Builds the scene: the hand frame at \p hand_pose with joints at \p q (also the targets), and
+  /// the object. Throws topograsp::invalid_argument naming the argument for a non-finite or
+  /// wrongly sized q, a bad pose, an object without shapes, a bad shape, a non-positive mass
+  /// (or density when the mass is 0), or bad options.
+  HandScene(const Eigen::Isometry3d& hand_pose, const Config& q, const ObjectSpec& object,
+            const HandSceneOptions& options = {})
+      : world_(options.stepper), options_(options) {
+    require_configuration<M>(q, "q");
+    require_finite(hand_pose.matrix(), "hand_pose");
+    require_positive(options.friction, "options.friction");
+    if (object.shapes.empty())
+      detail::throw_invalid_argument("object.shapes", "expected at least one shape");
+    if (!(object.mass > 0.0)) {
+      if (object.mass != 0.0) require_positive(object.mass, "object.mass");
+      require_positive(object.density, "object.density (the mass is 0)");
+    }
+    hand_pose_ = hand_pose;
+    q_ = q;
+    forward_kinematics(kin_, q_);
+    link_body_.fill(-1);
+    std::vector<ShapeSpec> link_shapes;
+    for (std::size_t l = 0; l < ModelType::n_links; ++l) {
+      link_shapes.clear();
+      for (const Shape& s : M.shapes)
+        if (s.link == static_cast<int>(l)) link_shapes.push_back(s.spec);
+      if (link_shapes.empty()) continue;
+      BodyDesc d;
+      d.type = BodyType::kinematic;
+      d.pose = to_pose(link_pose(static_cast<int>(l)));
+      d.shapes = link_shapes;
+      d.friction = options.friction;
+      link_body_[l] = world_.add_body(d);
+    }
+    BodyDesc o;
+    o.type = BodyType::dynamic;
+    o.pose = object.pose;
+    o.shapes = object.shapes;
+    o.mass = object.mass;
+    o.density = object.density;
+    o.friction = options.friction;
+    object_ = world_.add_body(o);
+  }
+
+  /// Sets the joint targets (dim nq, rad or m) that the next step() drives the links to.
+  /// Throws topograsp::invalid_argument for non-finite entries.
+  void set_joint_targets(const Config& q) {
+    require_configuration<M>(q, "q");
+    q_ = q;
+  }
+  /// Sets the hand frame pose that the next step() drives the hand to.
+  void set_hand_pose(const Eigen::Isometry3d& pose) {
+    require_finite(pose.matrix(), "pose");
+    hand_pose_ = pose;
+  }
+  /// Puts the hand at \p pose with joints \p q at once (no motion, no contact impulses), and makes
+  /// them the targets.
+  void place_hand(const Eigen::Isometry3d& pose, const Config& q) {
+    set_hand_pose(pose);
+    set_joint_targets(q);
+    forward_kinematics(kin_, q_);
+    for (std::size_t l = 0; l < ModelType::n_links; ++l)
+      if (link_body_[l] >= 0) world_.set_pose(link_body_[l], link_pose(static_cast<int>(l)));
+  }
+
+  /// Drives the links to the targets and advances the world by one step; allocates nothing.
+  /// Returns the World's status (Status::numerical_issue ends the run).
+  Status step() noexcept {
+    forward_kinematics(kin_, q_);
+    for (std::size_t l = 0; l < ModelType::n_links; ++l)
+      if (link_body_[l] >= 0) world_.set_target(link_body_[l], link_pose(static_cast<int>(l)));
+    return world_.step();
+  }
+
+  /// The world pose of link \p l at the current targets and hand pose (after forward kinematics).
+  [[nodiscard]] Eigen::Isometry3d link_pose(int l) const noexcept {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.linear() = kin_.R[static_cast<std::size_t>(l)];
+    T.translation() = kin_.p[static_cast<std::size_t>(l)];
+    return hand_pose_ * T;
+  }
+
+  /// The number of hand-object contact points with a separation of at most \p max_separation (m).
+  [[nodiscard]] int hand_contacts(double max_separation = 0.0) const noexcept {
+    int n = 0;
+    for (const Manifold<S>& m : world_.manifolds())
+      if (m.body_b == object_ || m.body_a == object_)
+        for (int k = 0; k < m.count; ++k)
+          if (static_cast<double>(m.points[static_cast<std::size_t>(k)].separation) <=
+              max_separation)
+            ++n;
+    return n;
+  }
+  /// The total normal force (N) of the hand on the object over the last step.
+  [[nodiscard]] double hand_force() const noexcept {
+    double sum = 0.0;
+    for (const Manifold<S>& m : world_.manifolds())
+      if (m.body_b == object_ || m.body_a == object_)
+        for (int k = 0; k < m.count; ++k)
+          sum += static_cast<double>(m.points[static_cast<std::size_t>(k)].step_impulse);
+    return sum / world_.options().time_step;
+  }
+
+  /// The object frame in the world.
+  [[nodiscard]] Eigen::Isometry3d object_pose() const noexcept {
+    return world_.body(object_).pose();
+  }
+  /// The object frame in the hand frame.
+  [[nodiscard]] Eigen::Isometry3d object_in_hand() const noexcept {
+    return hand_pose_.inverse() * object_pose();
+  }
+  [[nodiscard]] const Eigen::Isometry3d& hand_pose() const noexcept { return hand_pose_; }
+  [[nodiscard]] const Config& joint_targets() const noexcept { return q_; }
+  [[nodiscard]] const World<S>& world() const noexcept { return world_; }
+  [[nodiscard]] World<S>& world() noexcept { return world_; }
+  [[nodiscard]] int object_body() const noexcept { return object_; }
+  /// The World body of link \p l, or -1 if the link has no shapes.
+  [[nodiscard]] int link_body(int l) const noexcept {
+    return link_body_[static_cast<std::size_t>(l)];
+  }
+  [[nodiscard]] const HandSceneOptions& options() const noexcept { return options_; }
+  /// Forward kinematics at the current targets (hand frame).
+  [[nodiscard]] const KinematicsData<M>& kinematics() const noexcept { return kin_; }
+
+ private:
+  World<S> world_;
+  HandSceneOptions options_;
+  KinematicsData<M> kin_;
+  Eigen::Isometry3d hand_pose_ = Eigen::Isometry3d::Identity();
+  Config q_ = Config::Zero();
+  std::array<int, ModelType::n_links> link_body_{};
+  int object_ = -1;
+};
+
+}  // namespace topograsp

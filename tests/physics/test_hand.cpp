@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Hand scenes: closing each shipped hand on a cylinder, the shake test and the six-gravity test,
+// determinism, bad input.
+#include "physics_test_support.hpp"
+
+#include <cstring>
+
+#include <catch2/catch.hpp>
+
+using namespace topograsp;
+using test::cylinder_object;
+
+namespace {
+
+// Closes the hand of model M at configuration q on a cylinder and checks the outcome.
+template <const auto& M>
+void check_closing(const Vec<M.nq>& q, const Eigen::Vector3d& centre, const Eigen::Vector3d& axis,
+                   double r, int min_touching) {
+  const Eigen::Isometry3d hand =
+      test::z_along(Eigen::Vector3d(1, 1, 0).normalized(), Eigen::Vector3d(0.1, -0.2, 0.5));
+  HandScene<M> scene(hand, q, cylinder_object(hand, centre, axis, r, 0.08, 0.3));
+  const CloseOptions co;
+  const auto result = close_hand(scene, co);
+  REQUIRE(result.status == Status::success);
+  CHECK(result.touching_joints >= min_touching);
+  CHECK(result.contacts >= 2);
+  const Vec<M.nq> lo = lower_limits<M>(), hi = upper_limits<M>(), dir = closing_directions<M>();
+  for (int i = 0; i < M.nq; ++i) {
+    INFO("joint " << M.joint_name(i));
+    if (dir[i] == 0.0) {
+      CHECK(result.q_contact[i] == q[i]);  // joints that do not close stay where they were
+      continue;
+    }
+    // Each closing joint moved toward closed, and stopped at contact or at its limit.
+    CHECK(dir[i] * (result.q_contact[i] - q[i]) >= 0.0);
+    const bool at_limit = result.q_contact[i] == lo[i] || result.q_contact[i] == hi[i];
+    CHECK((result.touched[static_cast<std::size_t>(i)] || at_limit));
+    if (result.touched[static_cast<std::size_t>(i)]) {
+      CHECK(result.q_squeezed[i] ==
+            Approx(std::clamp(result.q_contact[i] + dir[i] * co.squeeze, lo[i], hi[i])));
+    }
+  }
+  // Squeezed, the hand presses on the object without a deep overlap (well under a finger radius).
+  CHECK(scene.hand_force() > 1.0);
+  for (const auto& m : scene.world().manifolds())
+    for (int k = 0; k < m.count; ++k)
+      CHECK(m.points[static_cast<std::size_t>(k)].separation > -0.01);
+}
+
+}  // namespace
+
+TEST_CASE("closing each shipped hand on a cylinder stops every finger at contact",
+          "[physics][close]") {
+  SECTION("Schunk SDH") {
+    Vec<7> q;
+    q << 0.0, -0.6, 0.2, -0.6, 0.2, -0.6, 0.2;
+    check_closing<models::schunk_sdh>(q, {0.0, 0.0, 0.16}, Eigen::Vector3d::UnitY(), 0.035, 3);
+  }
+  SECTION("human hand") {
+    Vec<20> q = Vec<20>::Zero();
+    q[17] = 0.3;  // thumb CMC2 opened (it closes toward negative values)
+    check_closing<models::human_hand>(q, {0.045, 0.0, 0.11}, Eigen::Vector3d::UnitY(), 0.02, 5);
+  }
+  SECTION("Barrett BH8") {
+    const Vec<4> q = Vec<4>::Zero();
+    check_closing<models::barrett_bh8>(q, {0.0, -0.02, 0.14}, Eigen::Vector3d::UnitX(), 0.03, 3);
+  }
+}
+
+TEST_CASE("a firm grasp passes the shake test and a slippery one fails it", "[physics][shake]") {
+  SECTION("mu = 1 holds") {
+    auto scene = test::sdh_bottle_scene(1.0);
+    REQUIRE(close_hand(scene).status == Status::success);
+    const ShakeResult r = shake_test(scene);
+    CHECK(r.stable);
+    CHECK(r.reason.empty());
+    CHECK(r.status == Status::success);
+    CHECK(r.finite);
+    CHECK(r.contacts > 0);
+    CHECK(r.translation < 0.02);
+    CHECK(r.rotation < deg(15));
+    CHECK(r.steps == 130);
+    CHECK(r.simulated_time == Approx(130.0 / 60.0));
+  }
+  SECTION("mu = 0.05 drops the bottle") {
+    auto scene = test::sdh_bottle_scene(0.05);
+    REQUIRE(close_hand(scene).status == Status::success);
+    const ShakeResult r = shake_test(scene);
+    CHECK_FALSE(r.stable);
+    CHECK_FALSE(r.reason.empty());
+    CHECK(r.translation > 0.02);
+  }
+}
+
+TEST_CASE("the six-gravity-direction test holds a firm grasp and leaves the scene alone",
+          "[physics][shake]") {
+  auto scene = test::sdh_bottle_scene(1.0);
+  REQUIRE(close_hand(scene).status == Status::success);
+  const Eigen::Isometry3d before = scene.object_pose();
+  const GravityTestResult g = gravity_test(scene);
+  CHECK(g.stable);
+  for (std::size_t d = 0; d < 6; ++d) {
+    INFO("direction " << d);
+    CHECK(g.held[d]);
+    CHECK(g.contacts[d] > 0);
+    CHECK(g.translation[d] < 0.02);
+  }
+  CHECK(scene.object_pose().isApprox(before, 0.0));
+  auto slippery = test::sdh_bottle_scene(0.05);
+  REQUIRE(close_hand(slippery).status == Status::success);
+  CHECK_FALSE(gravity_test(slippery).stable);
+}
+
+TEST_CASE("shakes are random but reproducible", "[physics][shake][determinism]") {
+  auto a = test::sdh_bottle_scene(1.0);
+  REQUIRE(close_hand(a).status == Status::success);
+  auto b = a, c = a;
+  ShakeOptions o;
+  o.seed = 7;
+  const ShakeResult ra = shake_test(a, o), rb = shake_test(b, o);
+  o.seed = 8;
+  const ShakeResult rc = shake_test(c, o);
+  // Bitwise identical runs for the same seed.
+  CHECK(std::memcmp(&ra.translation, &rb.translation, sizeof(double)) == 0);
+  CHECK(std::memcmp(&ra.rotation, &rb.rotation, sizeof(double)) == 0);
+  const auto& ba = a.world().body(a.object_body());
+  const auto& bb = b.world().body(b.object_body());
+  CHECK(std::memcmp(ba.x.data(), bb.x.data(), 3 * sizeof(double)) == 0);
+  CHECK(std::memcmp(ba.v.data(), bb.v.data(), 3 * sizeof(double)) == 0);
+  CHECK(std::memcmp(ba.q.coeffs().data(), bb.q.coeffs().data(), 4 * sizeof(double)) == 0);
+  // Another seed shakes differently.
+  CHECK(ra.translation != rc.translation);
+}
+
+TEST_CASE("bad input to the scene and the tests throws naming the argument", "[physics][input]") {
+  const Eigen::Isometry3d hand = Eigen::Isometry3d::Identity();
+  const Vec<7> q = Vec<7>::Zero();
+  const auto throws_with = [](auto&& f, const std::string& name) {
+    try {
+      f();
+    } catch (const topograsp::invalid_argument& e) {
+      INFO(e.what());
+      CHECK(std::string(e.what()).rfind(name, 0) == 0);
+      return;
+    }
+    FAIL("no topograsp::invalid_argument for " << name);
+  };
+  ObjectSpec good = cylinder_object(hand, {0, 0, 0.16}, Eigen::Vector3d::UnitY(), 0.03, 0.05, 0.2);
+  throws_with(
+      [&] {
+        ObjectSpec o = good;
+        o.mass = -1.0;
+        HandScene<models::schunk_sdh> s(hand, q, o);
+      },
+      "object.mass");
+  throws_with(
+      [&] {
+        ObjectSpec o = good;
+        o.mass = 0.0;
+        HandScene<models::schunk_sdh> s(hand, q, o);
+      },
+      "object.density");
+  throws_with(
+      [&] {
+        ObjectSpec o = good;
+        o.shapes[0].size[0] = 0.0;
+        HandScene<models::schunk_sdh> s(hand, q, o);
+      },
+      "desc.shapes[0].size[0]");
+  throws_with(
+      [&] {
+        ObjectSpec o = good;
+        o.shapes.clear();
+        HandScene<models::schunk_sdh> s(hand, q, o);
+      },
+      "object.shapes");
+  throws_with(
+      [&] {
+        ObjectSpec o = good;
+        o.pose.p[1] = std::nan("");
+        HandScene<models::schunk_sdh> s(hand, q, o);
+      },
+      "desc.pose");
+  throws_with(
+      [&] {
+        Vec<7> bad = q;
+        bad[3] = std::nan("");
+        HandScene<models::schunk_sdh> s(hand, bad, good);
+      },
+      "q");
+  throws_with(
+      [&] {
+        Eigen::Isometry3d h = hand;
+        h.translation().x() = std::numeric_limits<double>::infinity();
+        HandScene<models::schunk_sdh> s(h, q, good);
+      },
+      "hand_pose");
+  throws_with(
+      [&] {
+        HandScene<models::schunk_sdh> s(hand, q, good);
+        ShakeOptions o;
+        o.shakes = 0;
+        (void)shake_test(s, o);
+      },
+      "options");
+  throws_with(
+      [&] {
+        HandSceneOptions so;
+        so.stepper.time_step = 0.0;
+        HandScene<models::schunk_sdh> s(hand, q, good, so);
+      },
+      "options.time_step");
+}
