@@ -1,0 +1,11 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// The geometry module: convex primitives in the world, composite objects, signed distances with
+/// witness points, a model's link shapes at a configuration.
+#pragma once
+
+#include <topograsp/geometry/composite.hpp>
+#include <topograsp/geometry/contact.hpp>
+#include <topograsp/geometry/model_shapes.hpp>
+#include <topograsp/geometry/primitive.hpp>
+#include <topograsp/geometry/signed_distance.hpp>

@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// Primitive: a convex collision shape (sphere, capsule, box, cylinder) placed in the world, the
+/// run-time counterpart of a model's ShapeSpec.
+#pragma once
+
+#include <cmath>
+
+#include <topograsp/core/constants.hpp>
+#include <topograsp/core/eigen.hpp>
+#include <topograsp/core/error.hpp>
+#include <topograsp/model/spec.hpp>
+
+namespace topograsp {
+
+/// A convex shape with a world pose. Every shape is centred at \c p; capsules and cylinders run
+/// along the third column of \c R (their local z axis).
+///
+/// - sphere: size = {radius, -, -}
+/// - capsule: size = {radius, half length of the segment, -}
+/// - box: size = half extents {x, y, z} along the columns of R
+/// - cylinder: size = {radius, half height, -}
+struct Primitive {
+  ShapeType type = ShapeType::sphere;
+  Mat3 R = Mat3::Identity();  ///< orientation: local to world
+  Vec3 p = Vec3::Zero();      ///< centre (m)
+  Vec3 size = Vec3::Zero();   ///< see above (m)
+
+  /// A sphere of \p radius at \p centre.
+  /// \throws topograsp::invalid_argument naming "centre" or "radius".
+  [[nodiscard]] static Primitive sphere(const Vec3& centre, double radius) {
+    require_finite(centre, "centre");
+    require_positive(radius, "radius");
+    Primitive s;
+    s.type = ShapeType::sphere;
+    s.p = centre;
+    s.size = Vec3(radius, 0.0, 0.0);
+    return s;
+  }
+
+  /// A capsule of \p radius around the segment from \p a to \p b (a = b gives a sphere-like
+  /// capsule of zero length).
+  /// \throws topograsp::invalid_argument naming "a", "b" or "radius".
+  [[nodiscard]] static Primitive capsule(const Vec3& a, const Vec3& b, double radius) {
+    require_finite(a, "a");
+    require_finite(b, "b");
+    require_positive(radius, "radius");
+    Primitive s;
+    s.type = ShapeType::capsule;
+    s.p = 0.5 * (a + b);
+    const Vec3 u = b - a;
+    const double len = u.norm();
+    if (len > 0.0) s.R = Eigen::Quaterniond::FromTwoVectors(Vec3::UnitZ(), u).toRotationMatrix();
+    s.size = Vec3(radius, 0.5 * len, 0.0);
+    return s;
+  }
+
+  /// A box with half extents \p half at \p pose (its rotation must be orthonormal).
+  /// \throws topograsp::invalid_argument naming "pose" (non-finite) or "half" (an entry <= 0).
+  [[nodiscard]] static Primitive box(const Eigen::Isometry3d& pose, const Vec3& half) {
+    require_finite(pose.matrix(), "pose");
+    for (int k = 0; k < 3; ++k) require_positive(half[k], "half");
+    Primitive s;
+    s.type = ShapeType::box;
+    s.R = pose.linear();
+    s.p = pose.translation();
+    s.size = half;
+    return s;
+  }
+
+  /// A cylinder of \p radius and height 2 * \p half_height along the z axis of \p pose.
+  /// \throws topograsp::invalid_argument naming "pose", "radius" or "half_height" (< 0).
+  [[nodiscard]] static Primitive cylinder(const Eigen::Isometry3d& pose, double radius,
+                                          double half_height) {
+    require_finite(pose.matrix(), "pose");
+    require_positive(radius, "radius");
+    require_finite(half_height, "half_height");
+    if (half_height < 0.0) detail::throw_invalid_argument("half_height", "expected a number >= 0");
+    Primitive s;
+    s.type = ShapeType::cylinder;
+    s.R = pose.linear();
+    s.p = pose.translation();
+    s.size = Vec3(radius, half_height, 0.0);
+    return s;
+  }
+
+  /// The shape \p spec of a model (pose in its link frame) on a link at world pose (R_link,
+  /// p_link). No checks (a checked model's shapes are valid).
+  [[nodiscard]] static Primitive from_spec(const ShapeSpec& spec, const Mat3& R_link,
+                                           const Vec3& p_link) noexcept {
+    Primitive s;
+    s.type = spec.type;
+    s.R.noalias() = R_link * spec.pose.rotation();
+    s.p.noalias() = p_link + R_link * spec.pose.translation();
+    s.size = Vec3(spec.size[0], spec.size[1], spec.size[2]);
+    return s;
+  }
+
+  /// The radius of the smallest sphere about \c p that holds the shape (m).
+  [[nodiscard]] double bounding_radius() const noexcept {
+    switch (type) {
+      case ShapeType::sphere:
+        return size[0];
+      case ShapeType::capsule:
+        return size[0] + size[1];
+      case ShapeType::box:
+        return size.norm();
+      case ShapeType::cylinder:
+        return std::hypot(size[0], size[1]);
+    }
+    return size.norm();
+  }
+
+  /// The volume (m^3).
+  [[nodiscard]] double volume() const noexcept {
+    switch (type) {
+      case ShapeType::sphere:
+        return 4.0 / 3.0 * pi * size[0] * size[0] * size[0];
+      case ShapeType::capsule:
+        return pi * size[0] * size[0] * (2.0 * size[1] + 4.0 / 3.0 * size[0]);
+      case ShapeType::box:
+        return 8.0 * size[0] * size[1] * size[2];
+      case ShapeType::cylinder:
+        return pi * size[0] * size[0] * 2.0 * size[1];
+    }
+    return 0.0;
+  }
+
+  /// This shape moved by the rigid transform \p T (applied in the world frame).
+  [[nodiscard]] Primitive transformed(const Eigen::Isometry3d& T) const noexcept {
+    Primitive s = *this;
+    s.R = T.linear() * R;
+    s.p = T * p;
+    return s;
+  }
+};
+
+}  // namespace topograsp

@@ -1,0 +1,246 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include <random>
+
+#include <catch2/catch.hpp>
+
+#include <topograsp/geometry.hpp>
+
+using namespace topograsp;
+
+namespace {
+
+Eigen::Isometry3d random_pose(std::mt19937& rng, double spread) {
+  std::uniform_real_distribution<double> u(-spread, spread);
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  std::uniform_real_distribution<double> a(-1.0, 1.0);
+  T.linear() = Eigen::Quaterniond(a(rng), a(rng), a(rng), a(rng)).normalized().toRotationMatrix();
+  T.translation() = Vec3(u(rng), u(rng), u(rng));
+  return T;
+}
+
+Primitive random_primitive(std::mt19937& rng, ShapeType type, double spread) {
+  std::uniform_real_distribution<double> s(0.02, 0.1);
+  const Eigen::Isometry3d T = random_pose(rng, spread);
+  switch (type) {
+    case ShapeType::sphere:
+      return Primitive::sphere(T.translation(), s(rng));
+    case ShapeType::capsule: {
+      const Vec3 h = T.linear().col(2) * s(rng);
+      return Primitive::capsule(T.translation() - h, T.translation() + h, s(rng) * 0.5);
+    }
+    case ShapeType::box:
+      return Primitive::box(T, Vec3(s(rng), s(rng), s(rng)));
+    case ShapeType::cylinder:
+      return Primitive::cylinder(T, s(rng), s(rng));
+  }
+  return {};
+}
+
+// A random point inside s.
+Vec3 random_inside(std::mt19937& rng, const Primitive& s) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (;;) {
+    const Vec3 l(u(rng), u(rng), u(rng));
+    switch (s.type) {
+      case ShapeType::sphere:
+        if (l.norm() <= 1.0) return s.p + s.size[0] * l;
+        break;
+      case ShapeType::capsule:
+        if (l.norm() <= 1.0) return s.p + s.R * Vec3(0, 0, s.size[1] * u(rng)) + s.size[0] * l;
+        break;
+      case ShapeType::box:
+        return s.p + s.R * s.size.cwiseProduct(l);
+      case ShapeType::cylinder:
+        if (l.head<2>().norm() <= 1.0)
+          return s.p + s.R * Vec3(s.size[0] * l.x(), s.size[0] * l.y(), s.size[1] * l.z());
+        break;
+    }
+  }
+}
+
+Primitive translated(Primitive s, const Vec3& t) {
+  s.p += t;
+  return s;
+}
+
+const std::array<ShapeType, 4> k_types{ShapeType::sphere, ShapeType::capsule, ShapeType::box,
+                                       ShapeType::cylinder};
+
+const char* name(ShapeType t) {
+  switch (t) {
+    case ShapeType::sphere:
+      return "sphere";
+    case ShapeType::capsule:
+      return "capsule";
+    case ShapeType::box:
+      return "box";
+    case ShapeType::cylinder:
+      return "cylinder";
+  }
+  return "?";
+}
+
+}  // namespace
+
+TEST_CASE("signed distance of separated shapes is the exact distance for every pair",
+          "[geometry]") {
+  std::mt19937 rng(42);
+  for (ShapeType ta : k_types)
+    for (ShapeType tb : k_types) {
+      int separated = 0;
+      for (int trial = 0; trial < 60; ++trial) {
+        const Primitive a = random_primitive(rng, ta, 0.15), b = random_primitive(rng, tb, 0.15);
+        const Contact c = signed_distance(a, b);
+        if (c.distance <= 1e-6) continue;
+        ++separated;
+        INFO(name(ta) << " vs " << name(tb) << " trial " << trial);
+        REQUIRE(std::isfinite(c.distance));
+        CHECK(c.normal.norm() == Approx(1.0).epsilon(1e-12));
+        CHECK((c.point_b - c.point_a - c.distance * c.normal).norm() < 1e-12);
+        // The witnesses lie on the surfaces and realise the distance ...
+        CHECK(std::abs(signed_distance(a, c.point_a)) < 1e-10);
+        CHECK(std::abs(signed_distance(b, c.point_b)) < 1e-10);
+        CHECK(signed_distance(b, c.point_a) == Approx(c.distance).margin(1e-10));
+        // ... and no point of A is closer to B.
+        for (int k = 0; k < 200; ++k)
+          CHECK(signed_distance(b, random_inside(rng, a)) >= c.distance - 1e-10);
+        // Symmetry.
+        const Contact r = signed_distance(b, a);
+        CHECK(r.distance == Approx(c.distance).margin(1e-11));
+      }
+      CHECK(separated > 10);
+    }
+}
+
+TEST_CASE("signed distance of overlapping shapes is minus the penetration depth", "[geometry]") {
+  std::mt19937 rng(43);
+  std::normal_distribution<double> g(0.0, 1.0);
+  for (ShapeType ta : k_types)
+    for (ShapeType tb : k_types) {
+      int overlapping = 0;
+      for (int trial = 0; trial < 60; ++trial) {
+        const Primitive a = random_primitive(rng, ta, 0.05), b = random_primitive(rng, tb, 0.05);
+        const Contact c = signed_distance(a, b);
+        if (c.distance >= -1e-4) continue;
+        ++overlapping;
+        INFO(name(ta) << " vs " << name(tb) << " trial " << trial << " d " << c.distance);
+        // EPA on a cylinder's curved rim stops at a tolerance; polytope cores are exact.
+        const bool curved = ta == ShapeType::cylinder || tb == ShapeType::cylinder;
+        const double tol_depth = curved ? 1e-7 : 1e-10, tol_witness = curved ? 3e-5 : 1e-10;
+        CHECK(c.normal.norm() == Approx(1.0).epsilon(1e-12));
+        CHECK((c.point_b - c.point_a - c.distance * c.normal).norm() < tol_witness);
+        // Moving B by the depth along the normal separates the shapes exactly ...
+        const double depth = -c.distance;
+        CHECK(signed_distance(a, translated(b, depth * c.normal)).distance ==
+              Approx(0.0).margin(tol_depth));
+        CHECK(signed_distance(a, translated(b, (depth + 1e-3) * c.normal)).distance ==
+              Approx(1e-3).margin(tol_depth));
+        // ... and no shorter move in another direction does.
+        for (int k = 0; k < 50; ++k) {
+          const Vec3 u = Vec3(g(rng), g(rng), g(rng)).normalized();
+          CHECK(signed_distance(a, translated(b, 0.999 * depth * u)).distance < 1e-9);
+        }
+        const Contact r = signed_distance(b, a);
+        CHECK(r.distance == Approx(c.distance).margin(tol_depth));
+      }
+      CHECK(overlapping > 10);
+    }
+}
+
+TEST_CASE("the distance changes by the normal component of a rigid motion", "[geometry]") {
+  // d d = n . v_B(point_b) - n . v_A(point_a): the formula every distance Jacobian relies on.
+  std::mt19937 rng(44);
+  std::normal_distribution<double> g(0.0, 1.0);
+  for (ShapeType ta : k_types)
+    for (ShapeType tb : k_types)
+      for (int trial = 0; trial < 25; ++trial) {
+        const Primitive a = random_primitive(rng, ta, 0.1), b = random_primitive(rng, tb, 0.1);
+        const Contact c = signed_distance(a, b);
+        const Vec3 w(g(rng), g(rng), g(rng)), v(g(rng), g(rng), g(rng)), o = random_inside(rng, b);
+        // Rigid motion of B: angular velocity w about o plus translation v.
+        const auto moved = [&](double t) {
+          Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+          T.translate(o + t * v);
+          T.rotate(Eigen::AngleAxisd(t * w.norm(), w.normalized()));
+          T.translate(-o);
+          return b.transformed(T);
+        };
+        const double h = 1e-6;
+        const double fd =
+            (signed_distance(a, moved(h)).distance - signed_distance(a, moved(-h)).distance) /
+            (2 * h);
+        const double analytic = c.normal.dot(v + w.cross(c.point_b - o));
+        INFO(name(ta) << " vs " << name(tb) << " trial " << trial << " d " << c.distance);
+        const bool curved_overlap =
+            c.distance < 0.0 && (ta == ShapeType::cylinder || tb == ShapeType::cylinder);
+        CHECK(analytic == Approx(fd).margin(curved_overlap ? 2e-4 : 1e-6));
+      }
+}
+
+TEST_CASE("signed distance closed-form cases", "[geometry]") {
+  const Eigen::Isometry3d I = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d T = I;
+  SECTION("parallel cylinders side by side") {
+    T.translation() = Vec3(0.08, 0.01, 0.02);
+    const Contact c =
+        signed_distance(Primitive::cylinder(I, 0.05, 0.1), Primitive::cylinder(T, 0.04, 0.1));
+    CHECK(c.distance == Approx(std::hypot(0.08, 0.01) - 0.09).margin(1e-12));
+    T.translation() = Vec3(0.3, 0.01, 0.02);
+    CHECK(signed_distance(Primitive::cylinder(I, 0.05, 0.1), Primitive::cylinder(T, 0.04, 0.1))
+              .distance == Approx(std::hypot(0.3, 0.01) - 0.09).margin(1e-12));
+  }
+  SECTION("capsule lying on a box face, and sinking into it") {
+    const Primitive bx = Primitive::box(I, Vec3(0.1, 0.2, 0.3));
+    const Contact c =
+        signed_distance(Primitive::capsule(Vec3(0.15, -0.1, 0), Vec3(0.15, 0.1, 0.1), 0.01), bx);
+    CHECK(c.distance == Approx(0.04).margin(1e-14));
+    CHECK((c.normal + Vec3::UnitX()).norm() < 1e-12);
+    const Contact p =
+        signed_distance(Primitive::capsule(Vec3(0.07, -0.1, 0), Vec3(0.07, 0.1, 0), 0.01), bx);
+    CHECK(p.distance == Approx(-0.04).margin(1e-14));
+  }
+  SECTION("sphere inside a box and a cylinder") {
+    const Primitive s = Primitive::sphere(Vec3(0.0, 0.0, 0.25), 0.02);
+    CHECK(signed_distance(s, Primitive::box(I, Vec3(0.1, 0.2, 0.3))).distance ==
+          Approx(-0.07).margin(1e-15));
+    CHECK(signed_distance(s, Primitive::cylinder(I, 0.1, 0.3)).distance ==
+          Approx(-0.07).margin(1e-15));
+    CHECK(signed_distance(Primitive::cylinder(I, 0.1, 0.3), Vec3(0.2, 0.0, 0.4)) ==
+          Approx(std::hypot(0.1, 0.1)).margin(1e-15));
+  }
+  SECTION("crossing capsules get a normal across both axes") {
+    const Contact c = signed_distance(Primitive::capsule(Vec3(-1, 0, 0), Vec3(1, 0, 0), 0.1),
+                                      Primitive::capsule(Vec3(0, -1, 0), Vec3(0, 1, 0), 0.1));
+    CHECK(c.distance == Approx(-0.2));
+    CHECK(std::abs(c.normal.z()) == Approx(1.0));
+    CHECK(c.point_a.allFinite());
+  }
+  SECTION("concentric shapes give finite answers") {
+    const Contact a =
+        signed_distance(Primitive::sphere(Vec3::Zero(), 0.1), Primitive::sphere(Vec3::Zero(), 0.2));
+    CHECK(a.distance == Approx(-0.3));
+    const Contact b = signed_distance(Primitive::box(I, Vec3(0.1, 0.1, 0.1)),
+                                      Primitive::box(I, Vec3(0.1, 0.1, 0.1)));
+    CHECK(b.distance == Approx(-0.2).margin(1e-12));
+    const Contact c =
+        signed_distance(Primitive::cylinder(I, 0.1, 0.1), Primitive::cylinder(I, 0.1, 0.1));
+    CHECK(std::isfinite(c.distance));
+    CHECK(c.distance < -0.19);
+  }
+}
+
+TEST_CASE("primitives and composites reject bad input naming the argument", "[geometry]") {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  CHECK_THROWS_WITH(Primitive::sphere(Vec3(nan, 0, 0), 1.0), Catch::StartsWith("centre"));
+  CHECK_THROWS_WITH(Primitive::sphere(Vec3::Zero(), 0.0), Catch::StartsWith("radius"));
+  CHECK_THROWS_WITH(Primitive::capsule(Vec3::Zero(), Vec3(nan, 0, 0), 1.0), Catch::StartsWith("b"));
+  CHECK_THROWS_WITH(Primitive::box(T, Vec3(1, -1, 1)), Catch::StartsWith("half"));
+  CHECK_THROWS_WITH(Primitive::cylinder(T, 1.0, -0.5), Catch::StartsWith("half_height"));
+  T.translation().x() = nan;
+  CHECK_THROWS_WITH(Primitive::cylinder(T, 1.0, 0.5), Catch::StartsWith("pose"));
+  Primitive broken;
+  broken.size = Vec3(-1, 0, 0);
+  CHECK_THROWS_AS(Composite({broken}), invalid_argument);
+  CHECK_THROWS_WITH(Composite({broken}), Catch::StartsWith("parts"));
+}
