@@ -73,6 +73,17 @@ template <const auto& M>
   requires HandModel<decltype(M)>
 inline constexpr auto hand_curves_of = hand_curves<M>();
 
+/// The link points of hand curve \p C of \p M as an array of exactly its length (for tasks on
+/// fixed chains such as WritheTask).
+template <const auto& M, int C>
+  requires HandModel<decltype(M)>
+[[nodiscard]] consteval auto hand_curve_chain() {
+  constexpr auto& curve = hand_curves_of<M>[static_cast<std::size_t>(C)];
+  std::array<LinkPoint, static_cast<std::size_t>(curve.size)> out{};
+  for (std::size_t k = 0; k < out.size(); ++k) out[k] = curve.points[k];
+  return out;
+}
+
 /// The index of the hand curve of \p M that ends at the finger named \p finger; -1 if there is no
 /// such finger or it is the thumb.
 template <const auto& M>

@@ -10,6 +10,7 @@
 #include <ranges>
 #include <span>
 #include <string>
+#include <string_view>
 
 #include <topograsp/core/constants.hpp>
 #include <topograsp/core/eigen.hpp>
@@ -74,15 +75,15 @@ inline double winding_gradient_unchecked(const Vec3* x, std::size_t n, const Vec
 }
 
 template <PointRange R>
-void require_curve(const R& points, const Vec3& p) {
+void require_curve(const R& points, const Vec3& p, std::string_view name = "points") {
   if (std::ranges::size(points) < 2)
     throw_invalid_argument(
-        "points", "expected at least 2 points, got " + std::to_string(std::ranges::size(points)));
+        name, "expected at least 2 points, got " + std::to_string(std::ranges::size(points)));
   std::size_t i = 0;
   for (const Eigen::Vector3d& x : points) {
     for (int k = 0; k < 3; ++k)
       if (!std::isfinite(x[k]))
-        throw_invalid_argument("points",
+        throw_invalid_argument(name,
                                "expected finite points, point " + std::to_string(i) + " is not");
     ++i;
   }
