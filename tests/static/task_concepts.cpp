@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The task models satisfy TaskVariable, TaskSet satisfies TaskStack; other types do not.
+#include <topograsp/model/models.hpp>
 #include <topograsp/task.hpp>
 
 namespace {
