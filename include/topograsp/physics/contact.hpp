@@ -30,11 +30,13 @@ struct ContactPoint {
   V3 anchor_a = V3::Zero(), anchor_b = V3::Zero();  ///< from each centre of mass (world)
   V3 local_a = V3::Zero(), local_b = V3::Zero();    ///< the same in body axes
   V3 t1 = V3::UnitX(), t2 = V3::UnitY();            ///< tangent basis
-  S adjusted_separation = S(0);
   S normal_mass = S(0);
   Eigen::Matrix<S, 2, 2> tangent_mass = Eigen::Matrix<S, 2, 2>::Zero();
   S tangent_mass_iso = S(0);  ///< 2 / trace of the tangent effective-mass inverse
   S bias_rate = S(0), mass_scale = S(1), impulse_scale = S(0), max_push = S(0);
+  // Within a step: the anchors turned with their bodies, the normal and tangents with body A.
+  V3 ra = V3::Zero(), rb = V3::Zero();
+  V3 n_now = V3::UnitZ(), t1_now = V3::UnitX(), t2_now = V3::UnitY();
 };
 
 /// The contacts of one pair of shapes (a "manifold"), at most 4 points, and the pair's torsional
@@ -50,6 +52,7 @@ struct Manifold {
   physics_detail::V3<S> twist_axis = physics_detail::V3<S>::UnitZ();
   S twist_mass = S(0);     ///< 0 when the pair has no torsional friction this step
   S twist_impulse = S(0);  ///< accumulated torsional impulse (N m s)
+  physics_detail::V3<S> twist_axis_now = physics_detail::V3<S>::UnitZ();  ///< turned with A
 };
 
 }  // namespace topograsp

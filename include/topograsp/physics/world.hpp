@@ -41,7 +41,8 @@ struct Collider {
 /// Build a scene with add_body(); then call step() at the fixed time step. Once built, step()
 /// allocates nothing: every contact slot (one per pair of shapes that can touch) exists from
 /// add_body() on. One step:
-///  1. kinematic bodies get the velocity that reaches their target pose in one step;
+///  1. kinematic bodies with a target get the velocity that reaches it in one step (ramped
+///     linearly through the step from the previous step's, see kinematic_substep());
 ///  2. the narrow phase finds up to 4 contacts per pair of shapes (including speculative ones
 ///     closer than StepperOptions::speculative_distance) and matches them by feature id to the
 ///     previous step's, to warm start them;
@@ -143,7 +144,7 @@ class World {
       colliders_.push_back(c);
     }
     bodies_.push_back(b);
-    targets_.push_back({b.R, b.x, false});
+    targets_.push_back(Target{b.R, b.x, false});
     saved_.push_back({});
     update_colliders(index);
     // Contact slots with every earlier body that this one can touch.
@@ -190,7 +191,7 @@ class World {
     b.R = b.q.toRotationMatrix();
     b.x = pose.translation().template cast<S>() + b.R * b.local_com;
     if (b.type == BodyType::dynamic) b.inv_inertia = b.R * b.inv_inertia_local * b.R.transpose();
-    targets_[static_cast<std::size_t>(body)] = {b.R, b.x, false};
+    targets_[static_cast<std::size_t>(body)] = Target{b.R, b.x, false};
     update_colliders(body);
   }
 
@@ -229,6 +230,7 @@ class World {
     const S lin_damp = S(1) / (S(1) + h * static_cast<S>(options_.linear_damping));
     const S ang_damp = S(1) / (S(1) + h * static_cast<S>(options_.angular_damping));
     for (int sub = 0; sub < n_sub; ++sub) {
+      kinematic_substep(sub, n_sub);
       for (RigidBody<S>& b : bodies_) {
         if (b.type != BodyType::dynamic) continue;
         b.v = lin_damp * (b.v + h * gravity_);
@@ -247,7 +249,7 @@ class World {
     for (Manifold<S>& m : manifolds_)
       for (int k = 0; k < m.count; ++k) {
         ContactPoint<S>& c = m.points[static_cast<std::size_t>(k)];
-        c.friction_impulse = c.tangent_impulse.x() * c.t1 + c.tangent_impulse.y() * c.t2;
+        c.friction_impulse = c.tangent_impulse.x() * c.t1_now + c.tangent_impulse.y() * c.t2_now;
       }
     if (!state_ok()) {
       restore_state();
@@ -314,10 +316,13 @@ class World {
     M3 R;
     V3 p;
     bool active = false;
+    V3 v = V3::Zero(), w = V3::Zero();            // this step's chord velocities
+    V3 prev_v = V3::Zero(), prev_w = V3::Zero();  // the previous step's
   };
   struct Saved {
     V3 x = V3::Zero(), v = V3::Zero(), w = V3::Zero();
     physics_detail::Quat<S> q = physics_detail::Quat<S>::Identity();
+    M3 R = M3::Identity();
   };
 
   static void require_non_negative(double value, std::string_view argument) {
@@ -354,7 +359,7 @@ class World {
   void save_state() noexcept {
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
       const RigidBody<S>& b = bodies_[i];
-      saved_[i] = {b.x, b.v, b.w, b.q};
+      saved_[i] = {b.x, b.v, b.w, b.q, b.R};
     }
   }
   void restore_state() noexcept {
@@ -384,22 +389,45 @@ class World {
   void drive_kinematic(S dt) noexcept {
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
       RigidBody<S>& b = bodies_[i];
+      Target& t = targets_[i];
+      if (b.type != BodyType::kinematic || !t.active) continue;
+      t.v = (t.p - b.x) / dt;
+      t.w = physics_detail::log_rotation<S>(M3(t.R * b.R.transpose())) / dt;
+    }
+  }
+  // The velocity of a kinematic body in sub-step s of n. The targets are samples of a smooth
+  // path: the chord velocity u of this step is the velocity at its middle, and the velocity
+  // changes linearly through the step at the rate (u - u_prev) / dt, continuous across steps for
+  // a path of constant acceleration (a turning hand). The sub-step velocities average to u, so
+  // the body still reaches its target. A constant velocity per step instead would turn the
+  // velocity abruptly at each step, a demand friction can meet only within one sub-step.
+  void kinematic_substep(int s, int n) noexcept {
+    const S c = (static_cast<S>(s) + S(0.5)) / static_cast<S>(n) - S(0.5);
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      RigidBody<S>& b = bodies_[i];
       const Target& t = targets_[i];
       if (b.type != BodyType::kinematic || !t.active) continue;
-      b.v = (t.p - b.x) / dt;
-      b.w = physics_detail::log_rotation<S>(M3(t.R * b.R.transpose())) / dt;
+      b.v = t.v + c * (t.v - t.prev_v);
+      b.w = t.w + c * (t.w - t.prev_w);
     }
   }
   void finish_kinematic() noexcept {
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
       RigidBody<S>& b = bodies_[i];
       Target& t = targets_[i];
-      if (b.type != BodyType::kinematic || !t.active) continue;
+      if (b.type != BodyType::kinematic) continue;
+      if (!t.active) {
+        t.prev_v.setZero();
+        t.prev_w.setZero();
+        continue;
+      }
       b.x = t.p;
       b.q = physics_detail::Quat<S>(t.R).normalized();
       b.R = b.q.toRotationMatrix();
       b.v.setZero();
       b.w.setZero();
+      t.prev_v = t.v;
+      t.prev_w = t.w;
       t.active = false;
     }
   }
@@ -487,7 +515,6 @@ class World {
         c.anchor_b = c.point - B.x;
         c.local_a = A.R.transpose() * c.anchor_a;
         c.local_b = B.R.transpose() * c.anchor_b;
-        c.adjusted_separation = c.separation - (c.anchor_b - c.anchor_a).dot(n);
         const V3 rnA = c.anchor_a.cross(n), rnB = c.anchor_b.cross(n);
         const S kn = mA + mB + rnA.dot(iA * rnA) + rnB.dot(iB * rnB);
         c.normal_mass = kn > S(0) ? S(1) / kn : S(0);
@@ -505,6 +532,11 @@ class World {
         c.tangent_impulse =
             Eigen::Matrix<S, 2, 1>(c.friction_impulse.dot(c.t1), c.friction_impulse.dot(c.t2));
         c.step_impulse = S(0);
+        c.ra = c.anchor_a;
+        c.rb = c.anchor_b;
+        c.n_now = n;
+        c.t1_now = c.t1;
+        c.t2_now = c.t2;
         if (m.hand && k_hand > S(0)) {
           // Physical spring-damper (Catto, "Soft constraints", GDC 2011): with stiffness k and
           // damping c = 2 zeta sqrt(k m_eff), gamma = 1 / (h (c + h k)) and bias rate
@@ -527,6 +559,7 @@ class World {
       m.twist_mass = S(0);
       if (m.hand && torsion > S(0) && axis.squaredNorm() > S(1e-12)) {
         m.twist_axis = axis.normalized();
+        m.twist_axis_now = m.twist_axis;
         const S kt = m.twist_axis.dot(iA * m.twist_axis) + m.twist_axis.dot(iB * m.twist_axis);
         if (kt > S(0)) m.twist_mass = S(1) / kt;
       }
@@ -547,13 +580,13 @@ class World {
       RigidBody<S>& B = bodies_[static_cast<std::size_t>(m.body_b)];
       for (int k = 0; k < m.count; ++k) {
         const ContactPoint<S>& c = m.points[static_cast<std::size_t>(k)];
-        const V3 P = c.normal_impulse * c.normal + c.tangent_impulse.x() * c.t1 +
-                     c.tangent_impulse.y() * c.t2;
-        apply(A, -P, c.anchor_a);
-        apply(B, P, c.anchor_b);
+        const V3 P = c.normal_impulse * c.n_now + c.tangent_impulse.x() * c.t1_now +
+                     c.tangent_impulse.y() * c.t2_now;
+        apply(A, -P, c.ra);
+        apply(B, P, c.rb);
       }
       if (m.twist_mass > S(0)) {
-        const V3 L = m.twist_impulse * m.twist_axis;
+        const V3 L = m.twist_impulse * m.twist_axis_now;
         if (A.type == BodyType::dynamic) A.w -= A.inv_inertia * L;
         if (B.type == BodyType::dynamic) B.w += B.inv_inertia * L;
       }
@@ -567,15 +600,19 @@ class World {
       RigidBody<S>& A = bodies_[static_cast<std::size_t>(m.body_a)];
       RigidBody<S>& B = bodies_[static_cast<std::size_t>(m.body_b)];
       const Saved& sa = saved_[static_cast<std::size_t>(m.body_a)];
-      const Saved& sb = saved_[static_cast<std::size_t>(m.body_b)];
-      const V3 dp = (B.x - sb.x) - (A.x - sa.x);
+      // The contact frame turns with body A, and the anchors with their bodies, so that a grasp
+      // turning by several degrees a step keeps consistent contact velocities.
+      const M3 dR = A.type == BodyType::fixed ? M3::Identity() : M3(A.R * sa.R.transpose());
       const S mu = m.friction;
       S total = S(0);
       for (int k = 0; k < m.count; ++k) {
         ContactPoint<S>& c = m.points[static_cast<std::size_t>(k)];
-        // Current separation from the motion since the step began (anchors rotate with bodies).
-        const V3 ra = A.R * c.local_a, rb = B.R * c.local_b;
-        const S s = (dp + rb - ra).dot(c.normal) + c.adjusted_separation;
+        c.ra = A.R * c.local_a;
+        c.rb = B.R * c.local_b;
+        c.n_now = dR * c.normal;
+        // Current separation: the two anchors started at the same point, so their gap along the
+        // (turned) normal adds to the separation found by the narrow phase.
+        const S s = (B.x + c.rb - A.x - c.ra).dot(c.n_now) + c.separation;
         S bias = S(0), mass_scale = S(1), impulse_scale = S(0);
         if (s > S(0)) {
           bias = s * inv_h;  // speculative: allow the gap to close, no more
@@ -584,24 +621,26 @@ class World {
           mass_scale = c.mass_scale;
           impulse_scale = c.impulse_scale;
         }
-        const V3 dv = B.v + B.w.cross(c.anchor_b) - A.v - A.w.cross(c.anchor_a);
-        const S vn = dv.dot(c.normal);
+        const V3 dv = B.v + B.w.cross(c.rb) - A.v - A.w.cross(c.ra);
+        const S vn = dv.dot(c.n_now);
         const S impulse =
             -c.normal_mass * mass_scale * (vn + bias) - impulse_scale * c.normal_impulse;
         const S next = std::max(c.normal_impulse + impulse, S(0));
         const S d = next - c.normal_impulse;
         c.normal_impulse = next;
         total += next;
-        const V3 P = d * c.normal;
-        apply(A, -P, c.anchor_a);
-        apply(B, P, c.anchor_b);
+        const V3 P = d * c.n_now;
+        apply(A, -P, c.ra);
+        apply(B, P, c.rb);
       }
       // Friction after the normal impulses, limited by them (the order of Box2D v3: with soft
       // contacts, the biased solve lowers the normal impulse that the relax pass restores).
       for (int k = 0; k < m.count; ++k) {
         ContactPoint<S>& c = m.points[static_cast<std::size_t>(k)];
-        const V3 dv = B.v + B.w.cross(c.anchor_b) - A.v - A.w.cross(c.anchor_a);
-        const Eigen::Matrix<S, 2, 1> vt(dv.dot(c.t1), dv.dot(c.t2));
+        c.t1_now = dR * c.t1;
+        c.t2_now = dR * c.t2;
+        const V3 dv = B.v + B.w.cross(c.rb) - A.v - A.w.cross(c.ra);
+        const Eigen::Matrix<S, 2, 1> vt(dv.dot(c.t1_now), dv.dot(c.t2_now));
         Eigen::Matrix<S, 2, 1> next = c.tangent_impulse - c.tangent_mass * vt;
         // Circular cone: |friction| <= mu * normal. Sticking uses the full 2x2 effective mass;
         // when sliding, its off-diagonal coupling would turn the impulse away from the slip, so
@@ -614,18 +653,19 @@ class World {
         }
         const Eigen::Matrix<S, 2, 1> d = next - c.tangent_impulse;
         c.tangent_impulse = next;
-        const V3 P = d.x() * c.t1 + d.y() * c.t2;
-        apply(A, -P, c.anchor_a);
-        apply(B, P, c.anchor_b);
+        const V3 P = d.x() * c.t1_now + d.y() * c.t2_now;
+        apply(A, -P, c.ra);
+        apply(B, P, c.rb);
       }
       if (m.twist_mass > S(0)) {
         // Torsional friction: |torque impulse| <= mu * radius * normal impulse.
+        m.twist_axis_now = dR * m.twist_axis;
         const S limit = mu * static_cast<S>(options_.torsional_friction_radius) * total;
-        const S wn = (B.w - A.w).dot(m.twist_axis);
+        const S wn = (B.w - A.w).dot(m.twist_axis_now);
         const S next = physics_detail::clamp<S>(m.twist_impulse - m.twist_mass * wn, -limit, limit);
         const S d = next - m.twist_impulse;
         m.twist_impulse = next;
-        const V3 L = d * m.twist_axis;
+        const V3 L = d * m.twist_axis_now;
         if (A.type == BodyType::dynamic) A.w -= A.inv_inertia * L;
         if (B.type == BodyType::dynamic) B.w += B.inv_inertia * L;
       }
