@@ -12,4 +12,9 @@
 #include <topograsp/aico/sweep_mode.hpp>
 #include <topograsp/aico/sweep_record.hpp>
 #include <topograsp/aico/termination.hpp>
+#include <topograsp/aico/topological_layer.hpp>
+#include <topograsp/aico/topological_result.hpp>
+#include <topograsp/aico/topological_stack.hpp>
+#include <topograsp/aico/topology_mode.hpp>
+#include <topograsp/aico/topology_options.hpp>
 #include <topograsp/aico/workspace.hpp>

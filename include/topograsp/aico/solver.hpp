@@ -113,9 +113,11 @@ struct AicoAlgorithm {
     Buffers& out = ws.candidate();
     const auto& tr = p.transition();
     const int T = p.steps();
-    const int times = !relinearise                                ? 0
-                      : p.options().sweep == SweepMode::symmetric ? 1
-                                                                  : p.options().local_iterations;
+    // Forward relocations per step: none in symmetric sweeps (every step is relinearised once, in
+    // the backward pass, so a sweep is one damped Gauss-Newton step of the whole trajectory);
+    // up to local_iterations local Gauss-Newton steps on each step's marginal otherwise.
+    const bool local = relinearise && p.options().sweep == SweepMode::local_gauss_newton;
+    const int times = local ? p.options().local_iterations : 0;
     ws.relocations = 0;
     ws.non_finite = false;
     ws.factor_failed = false;
@@ -174,10 +176,10 @@ struct AicoAlgorithm {
       tr.apply_A_transpose(eta);
       // Step t + 1 is used by no later message of this pass: relinearise it at its new belief
       // for the next sweep (its belief stays the smoother's).
-      if (times > 0 && !move_linearisation(p, ws, out, t + 1)) return false;
+      if (relinearise && !move_linearisation(p, ws, out, t + 1)) return false;
       if (!belief(ws, out, t, P, eta)) return ws.factor_failed = true, false;
     }
-    if (times > 0 && !move_linearisation(p, ws, out, 1)) return false;
+    if (relinearise && !move_linearisation(p, ws, out, 1)) return false;
     // Refresh the terminal message at the new belief of x_T for the next sweep.
     const double tp = p.options().terminal_precision;
     out.V_inv[uT] = tp * StateMatrix::Identity();
@@ -295,8 +297,10 @@ double initialise(const AicoProblem<M, Stack, Mode>& problem, AicoWorkspace<M, S
   return initialise(problem, ws, q, qdot);
 }
 
-/// One AICO sweep (aico.md, "Sweeps"): a forward pass t = 1..T and a backward pass t = T-1..1,
-/// each computing the step's message, its damped belief and relocating it; then the true cost of
+/// One AICO sweep (aico.md, "Sweeps"): a forward pass t = 1..T (forward message and belief; in
+/// SweepMode::local_gauss_newton also up to local_iterations relocations of the step toward its
+/// belief) and a backward pass t = T-1..1 (backward message, belief, and relinearisation of each
+/// step at its new belief, with steps capped at max_step); then the true cost of
 /// the new beliefs decides (Levenberg-Marquardt): if it did not rise, the new trajectory is
 /// accepted and the damping divided by damping_decrease, else the accepted trajectory stays as it
 /// was and the damping is multiplied by damping_increase. Requires initialise() first. Allocates
@@ -410,7 +414,8 @@ template <const auto& M, TaskStack Stack, AicoMode Mode>
         ++rejected;
         // At a fixed point a sweep may raise the cost by rounding alone: a rejected sweep that
         // neither moves the trajectory nor changes the cost beyond the tolerances ends the solve.
-        if (rec.step < o.tolerance && rec.cost - ws.cost <= o.cost_tolerance * std::abs(ws.cost)) {
+        if (rec.step < o.tolerance && rec.damping <= o.damping &&
+            rec.cost - ws.cost <= o.cost_tolerance * std::abs(ws.cost)) {
           why = AicoTermination::step_tolerance;
           break;
         }
@@ -422,7 +427,8 @@ template <const auto& M, TaskStack Stack, AicoMode Mode>
       }
       in_a_row = 0;
       history.push_back(ws.cost);
-      if (rec.step < o.tolerance) {
+      // A small step only means convergence when damping did not make it small.
+      if (rec.step < o.tolerance && rec.damping <= o.damping) {
         why = AicoTermination::step_tolerance;
         break;
       }

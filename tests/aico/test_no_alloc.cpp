@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// A sweep allocates nothing: Eigen's run-time malloc guard plus a global operator new counter.
+#define EIGEN_RUNTIME_NO_MALLOC
+#include <catch2/catch.hpp>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+#include <topograsp/aico.hpp>
+#include <topograsp/model/models.hpp>
+
+#include "stacks.hpp"
+#include "wrap_scene.hpp"
+
+namespace {
+std::atomic<long> g_news{0};
+}  // namespace
+
+void* operator new(std::size_t n) {
+  ++g_news;
+  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace {
+
+using namespace topograsp;
+
+template <class Problem, class Workspace>
+void check_sweeps_do_not_allocate(const Problem& problem, Workspace& ws) {
+  (void)initialise(problem, ws);
+  const long before = g_news.load();
+  Eigen::internal::set_is_malloc_allowed(false);
+  int relocations = 0;
+  for (int k = 0; k < 3; ++k) relocations += sweep(problem, ws).relocations;
+  const bool passes_ok = message_passes(problem, ws);
+  Eigen::internal::set_is_malloc_allowed(true);
+  CHECK(g_news.load() == before);
+  CHECK(relocations > 0);  // the sweeps re-evaluated the tasks
+  CHECK(passes_ok);
+}
+
+}  // namespace
+
+TEST_CASE("an AICO sweep allocates nothing", "[aico][alloc]") {
+  constexpr const auto& robot = models::schunk_arm_sdh;
+  using Reach = test::ReachStack<robot, robot.frame("grasp_centre")>;
+  Reach stack;
+  stack.target = Vec3(0.2, -0.3, 0.7);
+  AicoOptions o;
+  o.steps = 30;
+  for (SweepMode sm : {SweepMode::symmetric, SweepMode::local_gauss_newton}) {
+    o.sweep = sm;
+    AicoProblem<robot, Reach> dynamic(stack, Vec<robot.nq>::Constant(0.1), o);
+    AicoWorkspace ws_d(dynamic);
+    check_sweeps_do_not_allocate(dynamic, ws_d);
+    AicoProblem<robot, Reach, AicoMode::kinematic> kinematic(stack, Vec<robot.nq>::Constant(0.1),
+                                                             o);
+    AicoWorkspace ws_k(kinematic);
+    check_sweeps_do_not_allocate(kinematic, ws_k);
+  }
+}
+
+TEST_CASE("a sweep with winding and collision tasks allocates nothing", "[aico][alloc]") {
+  const test::WrapScene scene;
+  using Stack = TopologicalStack<test::WrapBase, WindingTask<test::wrap_robot, 2>>;
+  AicoOptions o;
+  o.steps = 20;
+  Stack stack{scene.base(), scene.windings(), std::vector<Vec2>(21, scene.goal)};
+  AicoProblem<test::wrap_robot, Stack> problem(stack, scene.home, o);
+  AicoWorkspace ws(problem);
+  check_sweeps_do_not_allocate(problem, ws);
+}
