@@ -31,8 +31,8 @@ struct Collider {
   physics_detail::V3<S> local_p = physics_detail::V3<S>::Zero();      ///< from the centre of mass
   S bounding_radius = S(0);  ///< of a sphere about the shape's centre that contains it (m)
   int polytope = -1;         ///< index into World's polytopes (boxes and cylinders)
-  physics_detail::M3<S> R = physics_detail::M3<S>::Identity();  ///< world rotation (last step)
-  physics_detail::V3<S> p = physics_detail::V3<S>::Zero();      ///< world position (last step)
+  physics_detail::M3<S> R = physics_detail::M3<S>::Identity();  ///< world rotation (current)
+  physics_detail::V3<S> p = physics_detail::V3<S>::Zero();      ///< world position (current)
   ShapeSpec spec{};  ///< the shape as given, in the body frame
 };
 
@@ -224,7 +224,6 @@ class World {
     const S h = dt / static_cast<S>(n_sub);
     save_state();
     drive_kinematic(dt);
-    for (int i = 0; i < static_cast<int>(bodies_.size()); ++i) update_colliders(i);
     find_contacts();
     prepare_contacts(h);
     const S lin_damp = S(1) / (S(1) + h * static_cast<S>(options_.linear_damping));
@@ -246,6 +245,7 @@ class World {
               m.points[static_cast<std::size_t>(k)].normal_impulse;
     }
     finish_kinematic();
+    for (int i = 0; i < static_cast<int>(bodies_.size()); ++i) update_colliders(i);
     for (Manifold<S>& m : manifolds_)
       for (int k = 0; k < m.count; ++k) {
         ContactPoint<S>& c = m.points[static_cast<std::size_t>(k)];
@@ -306,7 +306,7 @@ class World {
     return e;
   }
 
-  /// The shape \p i as the narrow phase sees it (at its pose of the last step).
+  /// The shape \p i as the narrow phase sees it, at its current pose.
   [[nodiscard]] ShapeView<S> shape_view(int i) const noexcept {
     return view(colliders_[static_cast<std::size_t>(i)]);
   }

@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// MJCF export of a physics scene, so a grasp can be re-checked in MuJoCo (2.2 or later).
+#pragma once
+
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <string_view>
+
+#include <topograsp/physics/hand_scene.hpp>
+#include <topograsp/physics/world.hpp>
+
+namespace topograsp {
+
+namespace mjcf_detail {
+
+inline void write_pose(std::ostream& os, const Eigen::Isometry3d& T) {
+  const Eigen::Quaterniond q(T.linear());
+  os << " pos=\"" << T.translation().x() << ' ' << T.translation().y() << ' ' << T.translation().z()
+     << "\" quat=\"" << q.w() << ' ' << q.x() << ' ' << q.y() << ' ' << q.z() << '"';
+}
+
+inline std::string_view geom_type(ShapeType t) {
+  switch (t) {
+    case ShapeType::sphere:
+      return "sphere";
+    case ShapeType::capsule:
+      return "capsule";
+    case ShapeType::box:
+      return "box";
+    case ShapeType::cylinder:
+      return "cylinder";
+  }
+  return "sphere";
+}
+
+// One geom: the shape at `T` (in the enclosing body's frame).
+inline void write_geom(std::ostream& os, std::string_view indent, const std::string& name,
+                       const ShapeSpec& s, const Eigen::Isometry3d& T, double mu, double torsion) {
+  os << indent << "<geom name=\"" << name << "\" type=\"" << geom_type(s.type) << "\" size=\"";
+  switch (s.type) {
+    case ShapeType::sphere:
+      os << s.size[0];
+      break;
+    case ShapeType::capsule:
+    case ShapeType::cylinder:
+      os << s.size[0] << ' ' << s.size[1];
+      break;
+    case ShapeType::box:
+      os << s.size[0] << ' ' << s.size[1] << ' ' << s.size[2];
+      break;
+  }
+  os << '"';
+  write_pose(os, T);
+  os << " friction=\"" << mu << ' ' << mu * torsion << " 0.0001\" condim=\""
+     << (torsion > 0.0 ? 4 : 3) << "\"/>\n";
+}
+
+}  // namespace mjcf_detail
+
+/// Writes \p world as an MJCF model that MuJoCo 2.2 loads: fixed bodies as geoms of the world
+/// body; every kinematic body's shapes as geoms of one body named "hand" with mocap="true",
+/// placed at \p hand_frame (the hand at its current configuration); each dynamic body as a body
+/// with a free joint, named "object" (then "object_1", ...), with its geoms, mass, centre of mass
+/// and full inertia. Options: the time step, gravity, an elliptic (circular) friction cone and
+/// the Euler integrator. Each geom carries its body's friction coefficient mu and, with
+/// torsional friction (condim 4), mu * torsional_friction_radius: MuJoCo takes the larger value
+/// of a pair where topograsp takes sqrt(mu_a mu_b), the same when both bodies have the same mu.
+/// MuJoCo's contacts use its own softness (solref, solimp defaults), not hand_stiffness.
+template <class S>
+void write_mjcf(std::ostream& os, const World<S>& world, const Eigen::Isometry3d& hand_frame,
+                std::string_view model_name = "topograsp_scene") {
+  using mjcf_detail::write_geom;
+  const auto flags = os.flags();
+  const auto precision = os.precision();
+  os << std::setprecision(12);  // 1e-12 relative: far below any tolerance of a simulation
+  const StepperOptions& o = world.options();
+  const auto g = world.gravity().template cast<double>();
+  const double torsion = o.torsional_friction_radius;
+  os << "<mujoco model=\"" << model_name << "\">\n";
+  os << "  <compiler angle=\"radian\"/>\n";
+  os << "  <option timestep=\"" << o.time_step << "\" gravity=\"" << g.x() << ' ' << g.y() << ' '
+     << g.z() << "\" cone=\"elliptic\" integrator=\"Euler\"/>\n";
+  os << "  <worldbody>\n";
+  const auto shape_pose = [&](const Collider<S>& c) {
+    return world.body(c.body).pose() * c.spec.pose.isometry();
+  };
+  for (int b = 0; b < world.body_count(); ++b) {
+    const RigidBody<S>& body = world.body(b);
+    if (body.type != BodyType::fixed) continue;
+    for (int c = body.first_collider; c < body.first_collider + body.n_colliders; ++c)
+      write_geom(os, "    ", "fixed_" + std::to_string(c), world.collider(c).spec,
+                 shape_pose(world.collider(c)), static_cast<double>(body.friction), 0.0);
+  }
+  os << "    <body name=\"hand\" mocap=\"true\"";
+  mjcf_detail::write_pose(os, hand_frame);
+  os << ">\n";
+  const Eigen::Isometry3d hand_inv = hand_frame.inverse();
+  for (int b = 0; b < world.body_count(); ++b) {
+    const RigidBody<S>& body = world.body(b);
+    if (body.type != BodyType::kinematic) continue;
+    for (int c = body.first_collider; c < body.first_collider + body.n_colliders; ++c)
+      write_geom(os, "      ", "hand_" + std::to_string(c), world.collider(c).spec,
+                 hand_inv * shape_pose(world.collider(c)), static_cast<double>(body.friction),
+                 torsion);
+  }
+  os << "    </body>\n";
+  int n_objects = 0;
+  for (int b = 0; b < world.body_count(); ++b) {
+    const RigidBody<S>& body = world.body(b);
+    if (body.type != BodyType::dynamic) continue;
+    const std::string name = n_objects == 0 ? "object" : "object_" + std::to_string(n_objects);
+    ++n_objects;
+    os << "    <body name=\"" << name << '"';
+    mjcf_detail::write_pose(os, body.pose());
+    os << ">\n";
+    os << "      <joint name=\"" << name << "_free\" type=\"free\"/>\n";
+    const Mat3 I = body.inertia.template cast<double>();
+    const Vec3 c = body.local_com.template cast<double>();
+    os << "      <inertial pos=\"" << c.x() << ' ' << c.y() << ' ' << c.z() << "\" mass=\""
+       << static_cast<double>(body.mass) << "\" fullinertia=\"" << I(0, 0) << ' ' << I(1, 1) << ' '
+       << I(2, 2) << ' ' << I(0, 1) << ' ' << I(0, 2) << ' ' << I(1, 2) << "\"/>\n";
+    for (int k = body.first_collider; k < body.first_collider + body.n_colliders; ++k)
+      write_geom(os, "      ", name + "_" + std::to_string(k - body.first_collider),
+                 world.collider(k).spec, world.collider(k).spec.pose.isometry(),
+                 static_cast<double>(body.friction), torsion);
+    os << "    </body>\n";
+  }
+  os << "  </worldbody>\n</mujoco>\n";
+  os.flags(flags);
+  os.precision(precision);
+}
+
+/// Writes the hand scene \p scene (hand frame at the model's root link) as MJCF; see
+/// write_mjcf(std::ostream&, const World<S>&, ...).
+template <const auto& M, class S>
+void write_mjcf(std::ostream& os, const HandScene<M, S>& scene) {
+  write_mjcf(os, scene.world(), scene.hand_pose(), M.name.view());
+}
+
+/// The MJCF text of \p scene.
+template <const auto& M, class S>
+[[nodiscard]] std::string to_mjcf(const HandScene<M, S>& scene) {
+  std::ostringstream os;
+  write_mjcf(os, scene);
+  return os.str();
+}
+
+}  // namespace topograsp
