@@ -171,9 +171,10 @@ TEST_CASE("the distance changes by the normal component of a rigid motion", "[ge
             (2 * h);
         const double analytic = c.normal.dot(v + w.cross(c.point_b - o));
         INFO(name(ta) << " vs " << name(tb) << " trial " << trial << " d " << c.distance);
-        const bool curved_overlap =
-            c.distance < 0.0 && (ta == ShapeType::cylinder || tb == ShapeType::cylinder);
-        CHECK(analytic == Approx(fd).margin(curved_overlap ? 2e-4 : 1e-6));
+        // With a cylinder GJK and EPA approach the curved rim iteratively: the witness points
+        // (and so the gradient) are less accurate than the distance itself.
+        const bool curved = ta == ShapeType::cylinder || tb == ShapeType::cylinder;
+        CHECK(analytic == Approx(fd).margin(!curved ? 1e-6 : c.distance < 0.0 ? 2e-4 : 1e-5));
       }
 }
 

@@ -12,14 +12,26 @@ using namespace topograsp;
 
 namespace {
 
-// A pose that puts an object's origin at link shape i's centre, randomly turned, so that the
-// object reaches into the hand around that shape.
+// A pose that puts an object near link shape i, randomly turned, then slides it along the contact
+// normal until its distance to that shape is between -1 cm and +1.5 cm: the working range of the
+// potential (contact and shallow penetration).
 template <const auto& M>
-Eigen::Isometry3d near_shape(const KinematicsData<M>& d, std::size_t i, std::mt19937& rng) {
+Eigen::Isometry3d near_shape(const KinematicsData<M>& d, std::size_t i, std::mt19937& rng,
+                             Composite (*make)(const Eigen::Isometry3d&)) {
   std::uniform_real_distribution<double> a(-1.0, 1.0);
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.linear() = Eigen::Quaterniond(a(rng), a(rng), a(rng), a(rng)).normalized().toRotationMatrix();
   T.translation() = world_shape(d, i).p + 0.03 * Vec3(a(rng), a(rng), a(rng));
+  const Primitive s = world_shape(d, i);
+  const Composite object = make(T);
+  Contact nearest;
+  nearest.distance = std::numeric_limits<double>::infinity();
+  for (const Primitive& o : object.parts()) {
+    const Contact c = signed_distance(s, o);
+    if (c.distance < nearest.distance) nearest = c;
+  }
+  const double target = std::uniform_real_distribution<double>(-0.01, 0.015)(rng);
+  T.pretranslate((target - nearest.distance) * nearest.normal);
   return T;
 }
 
@@ -33,17 +45,19 @@ void check_collision_jacobian(std::uint32_t seed) {
     forward_kinematics(d, q);
     const std::size_t shape =
         std::uniform_int_distribution<std::size_t>(0, M.shapes.size() - 1)(rng);
-    const Eigen::Isometry3d T = near_shape(d, shape, rng);
     INFO(M.name.view() << " trial " << trial << " near shape " << shape);
     // Spheres, capsules and boxes: exact against the human hand; the other hands have
     // cylinders, whose penetration EPA approaches iteratively (signed_distance()).
     const bool exact_hand = M.name.view() == "human_hand";
-    const CollisionTask<M> blocks(test::blocks(T), 0.02);
+    const CollisionTask<M> blocks(test::blocks(near_shape(d, shape, rng, &test::blocks)), 0.02);
     CHECK(test::jacobian_error(blocks, q) < (exact_hand ? 1e-6 : 1e-4));
     // The bottle and the hammer bring cylinders of their own.
-    const CollisionTask<M> bottle(test::bottle(T), 0.02), hammer(test::hammer(T), 0.02);
-    CHECK(test::jacobian_error(bottle, q) < 3e-3);
-    CHECK(test::jacobian_error(hammer, q) < 3e-3);
+    const CollisionTask<M> bottle(test::bottle(near_shape(d, shape, rng, &test::bottle)), 0.02);
+    const CollisionTask<M> hammer(test::hammer(near_shape(d, shape, rng, &test::hammer)), 0.02);
+    // Deep inside a cylinder the penetration depth has kinks (the shortest way out switches
+    // between the side and a cap): there the gradient is that of one side.
+    CHECK(test::piecewise_jacobian_error(bottle, q) < 3e-3);
+    CHECK(test::piecewise_jacobian_error(hammer, q) < 3e-3);
     if (blocks.value(d)[0] > 0.0) ++nonzero;
   }
   CHECK(nonzero >= 6);

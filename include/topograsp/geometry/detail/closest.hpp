@@ -103,7 +103,7 @@ struct PointSolid {
 [[nodiscard]] inline PointSolid point_cylinder(const Vec3& x, const Mat3& R, const Vec3& p,
                                                double rad, double hh) noexcept {
   const Vec3 l = R.transpose() * (x - p);
-  const double rho = std::hypot(l.x(), l.y());
+  const double rho = std::sqrt(l.x() * l.x() + l.y() * l.y());
   const Vec3 u = rho > 0.0 ? Vec3(l.x() / rho, l.y() / rho, 0.0) : Vec3::UnitX();
   const double zs = l.z() >= 0.0 ? 1.0 : -1.0;
   const double dr = rho - rad, dz = std::abs(l.z()) - hh;
@@ -111,7 +111,7 @@ struct PointSolid {
   Vec3 yl, nl;
   if (dr > 0.0 && dz > 0.0) {
     yl = rad * u + Vec3(0, 0, zs * hh);
-    r.sd = std::hypot(dr, dz);
+    r.sd = std::sqrt(dr * dr + dz * dz);
     nl = (l - yl) / r.sd;
   } else if (dr > 0.0 || (dz <= 0.0 && dr > dz)) {
     // Outside through the side, or inside nearer the side than a cap.

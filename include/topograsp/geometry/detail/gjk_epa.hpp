@@ -38,7 +38,7 @@ namespace topograsp::detail {
       // In local coordinates, so that the radial part is exactly perpendicular to the axis even
       // when d is nearly parallel to it.
       const Vec3 l = s.R.transpose() * d;
-      const double rn = std::hypot(l.x(), l.y());
+      const double rn = std::sqrt(l.x() * l.x() + l.y() * l.y());
       const double k = rn > 0.0 ? s.size[0] / rn : 0.0;
       return s.p + s.R * Vec3(k * l.x(), k * l.y(), l.z() >= 0.0 ? s.size[1] : -s.size[1]);
     }
@@ -168,12 +168,14 @@ inline bool reduce_simplex(Simplex& s) noexcept {
           {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}}};
       double best = -1.0;
       Simplex best_s;
+      Simplex t;
       for (const auto& f : faces) {
         const Vec3 &fa = s.w(f[0]), &fb = s.w(f[1]), &fc = s.w(f[2]), &fd = s.w(f[3]);
         const Vec3 nrm = (fb - fa).cross(fc - fa);
         const bool beyond = -fa.dot(nrm) * (fd - fa).dot(nrm) <= 0.0;
         if (solid && !beyond) continue;
-        Simplex t = s;
+        t.v = s.v;
+        t.n = 4;
         reduce_triangle(t, f[0], f[1], f[2]);
         const double dist = t.point().squaredNorm();
         if (best < 0.0 || dist < best) {
