@@ -61,7 +61,7 @@ inline constexpr auto human_hand = [] {
                 .closes(1),
             revolute("thumb_ip", "thumb_mcp", hat(0.0150, 0.0138, 0.0353), flex, 0.0, deg(100))
                 .closes(1)),
-      shapes(box("palm", at(-0.004, -0.002, 0.055), {0.014, 0.040, 0.052}),
+      shapes(box("palm", at(-0.001, -0.002, 0.055), {0.019, 0.040, 0.052}),
              capsule("index_mcp", {0, 0, 0}, {0, 0, hs(0.0432)}, 0.010),
              capsule("index_pip", {0, 0, 0}, {0, 0, hs(0.0296)}, 0.009),
              capsule("index_dip", {0, 0, 0}, {0, 0, hs(0.0253)}, 0.008),
@@ -82,7 +82,8 @@ inline constexpr auto human_hand = [] {
              frame("ring_tip", "ring_dip", hat(0, 0, 0.0245)),
              frame("pinky_tip", "pinky_dip", hat(0, 0, 0.0232)),
              frame("thumb_tip", "thumb_ip", hat(0.0130, 0.0132, 0.0267)),
-             frame("palm_centre", "palm", hat(0.0, 0.0, 0.0900))),
+             frame("palm_centre", "palm", hat(0.0, 0.0, 0.0900)),
+             frame("grasp_centre", "palm", hat(0.0400, 0.0, 0.1250))),
       hand("palm_centre", finger("index", {"index_mcp", "index_pip", "index_dip", "index_tip"}),
            finger("middle", {"middle_mcp", "middle_pip", "middle_dip", "middle_tip"}),
            finger("ring", {"ring_mcp", "ring_pip", "ring_dip", "ring_tip"}),

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// Human demonstration grasps (paper IV, "Test data generation"): for each box hypothesis of an
+/// object, the 20-DOF human hand approaches until contact, closes and squeezes, and the shake
+/// test decides whether the grasp is stable.
+#pragma once
+
+#include <optional>
+
+#include <topograsp/grasp/hand_axes.hpp>
+#include <topograsp/grasp/hypothesis.hpp>
+#include <topograsp/grasp/placement.hpp>
+#include <topograsp/model/models.hpp>
+#include <topograsp/physics/close_hand.hpp>
+#include <topograsp/physics/shake_test.hpp>
+#include <topograsp/task/winding_descriptor.hpp>
+#include <topograsp/task/winding_task.hpp>
+
+namespace topograsp {
+
+/// The parameters of the grasp simulations shared by the demonstrations and the transfers.
+struct GraspSimOptions {
+  HandSceneOptions scene{};    ///< stepper and hand-object friction (the object's own is ignored)
+  CloseOptions close{};        ///< closing until contact and the squeeze
+  ShakeOptions shake{};        ///< the stability protocol
+  double contact_gap = 0.002;  ///< how close the approach brings the hand to the object (m)
+  double standoff = 0.12;      ///< where the approach starts, back from the face (m)
+};
+
+/// The open pre-shape of the human hand the demonstrations start from: fingers slightly bent,
+/// the thumb open in the plane of the palm, so that the palm meets the object first and the
+/// closing thumb (CMC2 toward palmar abduction, then MCP and IP) opposes the fingers.
+[[nodiscard]] inline Vec<20> human_preshape() {
+  Vec<20> q = Vec<20>::Zero();
+  constexpr auto& h = models::human_hand;
+  for (const char* j : {"index_mcp", "middle_mcp", "ring_mcp", "pinky_mcp", "index_pip",
+                        "middle_pip", "ring_pip", "pinky_pip"})
+    q[h.find_joint(j)] = 0.1;
+  q[h.joint("thumb_cmc1")] = 0.3;
+  q[h.joint("thumb_cmc2")] = 0.43;
+  return q;
+}
+
+/// One human grasp: the hypothesis it comes from, the hand pose and joints it closed to, the
+/// shake test's verdict and the winding values of the four hand curves around the object's centre
+/// of mass. Poses are in the object frame.
+struct HumanGrasp {
+  int id = 0;
+  GraspHypothesis hypothesis;
+  bool reached = false;  ///< the approach touched the object (else nothing was simulated)
+  Eigen::Isometry3d hand_pose = Eigen::Isometry3d::Identity();  ///< the palm (root link) pose
+  Vec<20> q = Vec<20>::Zero();       ///< joints after closing and squeezing
+  int touching_joints = 0;           ///< joints stopped by the object while closing
+  ShakeResult shake;                 ///< the stability verdict
+  Vec<4> windings = Vec<4>::Zero();  ///< w of gamma_1 (index) .. gamma_4 (pinky)
+  WindingDescriptor descriptor;      ///< the two largest, which curves
+  [[nodiscard]] bool stable() const noexcept { return reached && shake.stable; }
+};
+
+/// The object as the physics scene wants it, at the object-frame origin.
+[[nodiscard]] inline ObjectSpec object_spec(const GraspObject& object) {
+  return ObjectSpec{object.parts, Pose{}, object.mass, 0.0};
+}
+
+/// Runs hypothesis \p h of \p object with the human hand: place the palm (open pre-shape) at the
+/// stand-off, approach until contact, close and squeeze, shake. Deterministic for given options.
+[[nodiscard]] inline HumanGrasp demonstrate(const GraspObject& object, const GraspHypothesis& h,
+                                            int id, const GraspSimOptions& options = {}) {
+  constexpr auto& free = models::human_hand_free;
+  HumanGrasp g;
+  g.id = id;
+  g.hypothesis = h;
+  const Composite shape = object.composite();
+  const Vec<20> pre = human_preshape();
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = palm_rotation(human_hand_axes, h.approach, h.up);
+  T.translation() = h.centre - options.standoff * h.approach;
+  const Vec<26> start = place_frame<free>(T, free.frame("grasp_centre"), pre);
+  const auto touched = approach_until_contact<free>(start, h.approach, shape, options.contact_gap,
+                                                    2.0 * options.standoff);
+  if (!touched) return g;
+  g.reached = true;
+  KinematicsData<free> d;
+  forward_kinematics(d, *touched);
+  const auto palm = static_cast<std::size_t>(free.link("palm"));
+  g.hand_pose.linear() = d.R[palm];
+  g.hand_pose.translation() = d.p[palm];
+  HandSceneOptions scene_options = options.scene;
+  scene_options.friction = object.friction;
+  HandScene<models::human_hand> scene(g.hand_pose, pre, object_spec(object), scene_options);
+  const auto closed = close_hand(scene, options.close);
+  g.q = closed.q_squeezed;
+  g.touching_joints = closed.touching_joints;
+  g.shake = shake_test(scene, options.shake);
+  // The windings of the closed hand around the centre of mass.
+  Vec<26> qc = *touched;
+  qc.tail<20>() = g.q;
+  forward_kinematics(d, qc);
+  const Vec3 com = object.centre_of_mass();
+  g.windings = WindingTask<models::human_hand_free>(com).value(d);
+  g.descriptor = winding_descriptor(d, com);
+  return g;
+}
+
+}  // namespace topograsp

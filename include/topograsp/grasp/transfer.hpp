@@ -1,0 +1,326 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// The transfer methods: a stable human grasp to the Schunk SDH, by topological synergies (the
+/// paper: AICO on the 14-DOF arm + SDH with the human's two largest windings as targets), by the
+/// paper's baseline "transplant" (the SDH at the human palm's pose, fingers closed), and by
+/// fingertip mapping (Rohling and Hollerbach 1993: the SDH's fingertips fitted to the human's
+/// thumb, index and middle tips by least squares). Each result is closed until contact and
+/// judged by the shake test, the hand without the arm.
+#pragma once
+
+#include <chrono>
+#include <string>
+
+#include <topograsp/aico/solver.hpp>
+#include <topograsp/grasp/human_grasps.hpp>
+#include <topograsp/task/axis_task.hpp>
+#include <topograsp/task/collision_task.hpp>
+#include <topograsp/task/joint_limit_task.hpp>
+#include <topograsp/task/task_set.hpp>
+
+namespace topograsp {
+
+/// The parameters of the transfer methods; every field has a default used by grasp_transfer.
+struct TransferOptions {
+  GraspSimOptions sim{};  ///< closing, squeeze and shake test of the transferred grasp
+  /// The SDH's joints before closing: knuckle 0 (fingers facing the thumb), phalanges open.
+  Vec<7> sdh_preshape = (Vec<7>() << 0.0, -0.3, 0.3, -0.3, 0.3, -0.3, 0.3).finished();
+  /// The arm's start configuration (rad): elbow bent, the hand pointing forward.
+  Vec<7> arm_ready = (Vec<7>() << 0.0, 0.5, 0.0, 1.0, 0.0, 0.5, 0.0).finished();
+  /// The object is placed so that the human grasp centre lies this far beyond the SDH's grasp
+  /// centre at the start, along the approach (m): the plan has to move in.
+  double backoff = 0.06;
+  AicoOptions aico = [] {
+    AicoOptions o;
+    o.steps = 40;
+    o.duration = 2.0;
+    o.max_sweeps = 40;
+    o.tolerance = 1e-3;
+    return o;
+  }();
+  double winding_precision_mid = 1e1;  ///< precision of the winding targets on the way
+  double winding_precision_end = 1e4;  ///< and at the end
+  double collision_margin = 0.015;     ///< m
+  double collision_precision = 1e3;
+  double approach_precision_mid = 1e1;  ///< the SDH's approach axis along the human's
+  double approach_precision_end = 1e3;
+  double limit_precision = 1e3;  ///< joint limits, as a penalty
+  /// Least-squares iterations of the fingertip mapping.
+  int fingertip_iterations = 100;
+};
+
+/// A transferred grasp: where the SDH ended (object frame), how it was planned, the shake test.
+struct RobotGrasp {
+  std::string method;
+  bool planned = false;  ///< the method produced a hand pose (else not simulated)
+  std::string reason;    ///< why not planned, or the planner's termination
+  Eigen::Isometry3d hand_pose = Eigen::Isometry3d::Identity();  ///< SDH palm, object frame
+  Vec<7> q_open = Vec<7>::Zero();                               ///< the SDH's joints before closing
+  Vec<7> q_closed = Vec<7>::Zero();                             ///< after closing and squeezing
+  Vec2 winding = Vec2::Zero();  ///< w of the SDH's two curves around the centre of mass
+  double plan_ms = 0.0;         ///< time of the method's own planning (ms)
+  int sweeps = 0;               ///< AICO sweeps (topological only)
+  ShakeResult shake;
+  [[nodiscard]] bool stable() const noexcept { return planned && shake.stable; }
+};
+
+namespace detail {
+
+using Clock = std::chrono::steady_clock;
+inline double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// The pose of the SDH's grasp centre that corresponds to the human grasp centre (object frame):
+// the same point, the SDH's approach along the human's, the SDH's "up" (thumb to fingers) along
+// the human's fingers.
+inline Eigen::Isometry3d sdh_grasp_target(const HumanGrasp& g) {
+  constexpr auto& h = models::human_hand;
+  KinematicsData<h> d;
+  forward_kinematics(d, g.q);
+  const Eigen::Isometry3d gc = g.hand_pose * frame_pose(d, h.frame("grasp_centre"));
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = palm_rotation(gripper_hand_axes, gc.linear() * human_hand_axes.approach,
+                             gc.linear() * human_hand_axes.up);
+  T.translation() = gc.translation();
+  return T;
+}
+
+// The SDH palm (root) pose that puts its grasp centre at T (object frame).
+inline Eigen::Isometry3d sdh_root_for_grasp_centre(const Eigen::Isometry3d& T) {
+  constexpr auto& s = models::schunk_sdh;
+  KinematicsData<s> d;
+  forward_kinematics(d, Vec<7>::Zero());
+  return T * frame_pose(d, s.frame("grasp_centre")).inverse();
+}
+
+// The SDH windings of its two curves around the object's centre of mass.
+inline Vec2 sdh_windings(const GraspObject& object, const Eigen::Isometry3d& root,
+                         const Vec<7>& q) {
+  constexpr auto& s = models::schunk_sdh;
+  KinematicsData<s> d;
+  forward_kinematics(d, q);
+  return WindingTask<s>(Vec3(root.inverse() * object.centre_of_mass())).value(d);
+}
+
+}  // namespace detail
+
+/// Closes the SDH at \p root (its palm in the object frame) with joints \p q_open on the object,
+/// squeezes, and runs the shake test; fills the simulation fields of \p r.
+inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3d& root,
+                               const Vec<7>& q_open, const TransferOptions& options,
+                               RobotGrasp& r) {
+  HandSceneOptions scene_options = options.sim.scene;
+  scene_options.friction = object.friction;
+  HandScene<models::schunk_sdh> scene(root, clamp_to_limits<models::schunk_sdh>(q_open),
+                                      object_spec(object), scene_options);
+  const auto closed = close_hand(scene, options.sim.close);
+  r.hand_pose = root;
+  r.q_open = q_open;
+  r.q_closed = closed.q_squeezed;
+  r.winding = detail::sdh_windings(object, root, closed.q_squeezed);
+  r.shake = shake_test(scene, options.sim.shake);
+}
+
+/// The SDH's free-base configuration for palm pose \p root and hand joints \p q_hand, moved back
+/// along -\p approach until it clears the object by the contact gap (unchanged if it already
+/// does). Nothing if it cannot be cleared within a stand-off.
+[[nodiscard]] inline std::optional<Eigen::Isometry3d> clear_of_object(const GraspObject& object,
+                                                                      const Eigen::Isometry3d& root,
+                                                                      const Vec<7>& q_hand,
+                                                                      const Vec3& approach,
+                                                                      const GraspSimOptions& sim) {
+  constexpr auto& f = models::schunk_sdh_free;
+  const int palm = f.link("palm");
+  const Composite shape = object.composite();
+  KinematicsData<f> d;
+  const auto root_of = [&](const Vec<13>& q) {
+    forward_kinematics(d, q);
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.linear() = d.R[static_cast<std::size_t>(palm)];
+    T.translation() = d.p[static_cast<std::size_t>(palm)];
+    return T;
+  };
+  // The palm_centre frame sits on the palm, unrotated, base_height above the root.
+  Vec<13> q = place_frame<f>(root * Eigen::Translation3d(0, 0, models::sdh_dims::base_height),
+                             f.frame("palm_centre"), q_hand);
+  forward_kinematics(d, q);
+  if (hand_object_distance(d, shape) >= sim.contact_gap) return root_of(q);
+  Vec<13> back = q;
+  back.head<3>() -= sim.standoff * approach.normalized();
+  const auto moved =
+      approach_until_contact<f>(back, approach, shape, sim.contact_gap, sim.standoff);
+  if (!moved) return std::nullopt;
+  return root_of(*moved);
+}
+
+/// The paper's baseline: the SDH at the human hand's pose (its grasp centre at the human's, its
+/// approach along the human's), backed off only as far as needed to clear the object, then the
+/// fingers closed until contact.
+[[nodiscard]] inline RobotGrasp transfer_transplant(const GraspObject& object, const HumanGrasp& g,
+                                                    const TransferOptions& options = {}) {
+  const auto t0 = detail::Clock::now();
+  RobotGrasp r;
+  r.method = "transplant";
+  const Eigen::Isometry3d target = detail::sdh_grasp_target(g);
+  const auto root = clear_of_object(object, detail::sdh_root_for_grasp_centre(target),
+                                    options.sdh_preshape, target.linear().col(2), options.sim);
+  r.plan_ms = detail::ms_since(t0);
+  if (!root) {
+    r.reason = "the hand cannot be placed clear of the object";
+    return r;
+  }
+  r.planned = true;
+  simulate_sdh_grasp(object, *root, options.sdh_preshape, options, r);
+  return r;
+}
+
+/// Fingertip mapping (Rohling and Hollerbach 1993): the SDH on a free base fitted by damped
+/// least squares, within its joint limits, so that its thumb tip, finger 1 tip and finger 2 tip
+/// lie on the human's thumb, index and middle fingertips; started from the transplant pose, then
+/// cleared of the object, closed until contact.
+[[nodiscard]] inline RobotGrasp transfer_fingertip(const GraspObject& object, const HumanGrasp& g,
+                                                   const TransferOptions& options = {}) {
+  const auto t0 = detail::Clock::now();
+  RobotGrasp r;
+  r.method = "fingertip";
+  constexpr auto& f = models::schunk_sdh_free;
+  constexpr auto& h = models::human_hand;
+  KinematicsData<h> hd;
+  forward_kinematics(hd, g.q);
+  const std::array<Vec3, 3> goal{g.hand_pose * hd.frame_p[h.frame("thumb_tip")],
+                                 g.hand_pose * hd.frame_p[h.frame("index_tip")],
+                                 g.hand_pose * hd.frame_p[h.frame("middle_tip")]};
+  const std::array<int, 3> tips{f.frame("thumb_tip"), f.frame("tip_1"), f.frame("tip_2")};
+  const Eigen::Isometry3d target = detail::sdh_grasp_target(g);
+  Vec<13> q = place_frame<f>(target, f.frame("grasp_centre"), options.sdh_preshape);
+  const Vec<13> lo = lower_limits<f>(), hi = upper_limits<f>();
+  KinematicsData<f> d;
+  double lambda = 1e-3;
+  const auto residual = [&](const Vec<13>& x, Vec<9>& e) {
+    forward_kinematics(d, x);
+    for (std::size_t k = 0; k < 3; ++k)
+      e.segment<3>(3 * static_cast<int>(k)) =
+          d.frame_p[static_cast<std::size_t>(tips[k])] - goal[k];
+    return e.squaredNorm();
+  };
+  Vec<9> e;
+  double cost = residual(q, e);
+  for (int it = 0; it < options.fingertip_iterations; ++it) {
+    Mat<9, 13> J;
+    for (std::size_t k = 0; k < 3; ++k)
+      J.middleRows<3>(3 * static_cast<int>(k)) = frame_position_jacobian(d, tips[k]);
+    const Mat<13, 13> H = J.transpose() * J + lambda * Mat<13, 13>::Identity();
+    const Vec<13> step = -H.ldlt().solve(J.transpose() * e);
+    const Vec<13> trial = (q + step).cwiseMax(lo).cwiseMin(hi);
+    Vec<9> et;
+    const double c = residual(trial, et);
+    if (c < cost) {
+      q = trial;
+      e = et;
+      lambda = std::max(lambda / 3.0, 1e-9);
+      if (cost - c < 1e-12) {
+        cost = c;
+        break;
+      }
+      cost = c;
+    } else {
+      lambda *= 10.0;
+      (void)residual(q, e);
+    }
+  }
+  forward_kinematics(d, q);
+  const auto palm = static_cast<std::size_t>(f.link("palm"));
+  Eigen::Isometry3d fitted = Eigen::Isometry3d::Identity();
+  fitted.linear() = d.R[palm];
+  fitted.translation() = d.p[palm];
+  const Vec<7> q_hand = q.tail<7>();
+  const auto root = clear_of_object(object, fitted, q_hand, fitted.linear().col(2), options.sim);
+  r.plan_ms = detail::ms_since(t0);
+  if (!root) {
+    r.reason = "the fitted hand cannot be placed clear of the object";
+    return r;
+  }
+  r.planned = true;
+  simulate_sdh_grasp(object, *root, q_hand, options, r);
+  return r;
+}
+
+/// The transfer task set of the topological method for the arm + SDH: the windings of the SDH's
+/// two curves around the object's centre of mass (interpolated from the start to the human's
+/// values), the collision potential against the object, the approach axis, the joint limits.
+using TopologicalTaskSet =
+    TaskSet<WindingTask<models::schunk_arm_sdh, 2>, CollisionTask<models::schunk_arm_sdh>,
+            AxisTask<models::schunk_arm_sdh>, JointLimitTask<models::schunk_arm_sdh>>;
+
+/// Builds the topological task set for an object at \p T_world_object whose human descriptor is
+/// \p y, with the SDH's approach to be along \p approach (world); \p d holds the kinematics of the
+/// start configuration (the winding targets start from its values).
+[[nodiscard]] inline TopologicalTaskSet topological_tasks(
+    const GraspObject& object, const Eigen::Isometry3d& T_world_object, const Vec2& y,
+    const Vec3& approach, const KinematicsData<models::schunk_arm_sdh>& d,
+    const TransferOptions& options) {
+  constexpr auto& M = models::schunk_arm_sdh;
+  WindingTask<M, 2> winding({0, 1}, T_world_object * object.centre_of_mass());
+  const Vec2 w0 = winding.value(d);
+  TopologicalTaskSet set = make_task_set(
+      scheduled(std::move(winding), interpolated_target<2>(w0, y),
+                precision(options.winding_precision_mid, options.winding_precision_end)),
+      scheduled(CollisionTask<M>(object.composite(T_world_object), options.collision_margin),
+                constant_target<1>(Vec<1>::Zero()),
+                constant_precision(options.collision_precision)),
+      scheduled(AxisTask<M>(M.frame("grasp_centre"), Vec3::UnitZ()),
+                constant_target<3>(approach.normalized()),
+                precision(options.approach_precision_mid, options.approach_precision_end)),
+      scheduled(JointLimitTask<M>(), constant_target<M.nq>(Vec<M.nq>::Zero()),
+                constant_precision(options.limit_precision)));
+  return set;
+}
+
+/// Topological synergies (the paper): the human's descriptor y (its two largest windings around
+/// the object's centre of mass) becomes the winding target of the SDH's two curves; AICO plans the
+/// 14-DOF arm + SDH from its ready pose with the collision task and the approach direction; the
+/// object is placed (turned) so that the human's approach is the SDH's at the ready pose, a
+/// little out of reach. The final hand, without the arm, is closed until contact and shaken.
+[[nodiscard]] inline RobotGrasp transfer_topological(const GraspObject& object, const HumanGrasp& g,
+                                                     const TransferOptions& options = {}) {
+  const auto t0 = detail::Clock::now();
+  constexpr auto& M = models::schunk_arm_sdh;
+  RobotGrasp r;
+  r.method = "topological";
+  Vec<14> q0;
+  q0 << options.arm_ready, options.sdh_preshape;
+  KinematicsData<M> d;
+  forward_kinematics(d, q0);
+  const Eigen::Isometry3d gc = frame_pose(d, M.frame("grasp_centre"));
+  const Vec3 approach = gc.linear().col(2);
+  // The object such that the human grasp centre maps onto the SDH's, pushed out by the backoff.
+  const Eigen::Isometry3d T_world_object =
+      Eigen::Translation3d(options.backoff * approach) * gc * detail::sdh_grasp_target(g).inverse();
+  const Vec2 y = g.descriptor.values;
+  AicoProblem<M, TopologicalTaskSet> problem(
+      topological_tasks(object, T_world_object, y, approach, d, options), q0, options.aico);
+  AicoWorkspace ws(problem);
+  const AicoResult<M.nq> plan = solve(problem, ws);
+  r.plan_ms = detail::ms_since(t0);
+  r.sweeps = plan.sweeps;
+  r.reason = std::string(to_string(plan.termination));
+  const Vec<14> qT = plan.q.back();
+  forward_kinematics(d, qT);
+  const auto palm = static_cast<std::size_t>(M.link("palm"));
+  Eigen::Isometry3d root_world = Eigen::Isometry3d::Identity();
+  root_world.linear() = d.R[palm];
+  root_world.translation() = d.p[palm];
+  const Eigen::Isometry3d root = T_world_object.inverse() * root_world;
+  const Vec<7> q_hand = clamp_to_limits<models::schunk_sdh>(qT.tail<7>());
+  const auto cleared = clear_of_object(object, root, q_hand, root.linear().col(2), options.sim);
+  if (!cleared) {
+    r.reason = "the planned hand penetrates the object";
+    return r;
+  }
+  r.planned = true;
+  simulate_sdh_grasp(object, *cleared, q_hand, options, r);
+  return r;
+}
+
+}  // namespace topograsp
