@@ -2,3 +2,4 @@
 # How each example runs as a test (short arguments so the suite stays fast).
 add_test(NAME "example: fingertips" COMMAND fingertips)
 add_test(NAME "example: custom_hand" COMMAND custom_hand)
+add_test(NAME "example: wrap" COMMAND wrap --out ${CMAKE_CURRENT_BINARY_DIR}/wrap-out)

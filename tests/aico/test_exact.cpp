@@ -14,7 +14,7 @@ namespace {
 using namespace topograsp;
 
 template <AicoMode Mode, const auto& M, int D>
-void check_exact(std::uint32_t seed) {
+void check_exact(std::uint32_t seed, SweepMode sweep_mode = SweepMode::symmetric) {
   constexpr int nq = M.nq;
   constexpr int nx = Mode == AicoMode::dynamic ? 2 * nq : nq;
   std::mt19937 rng(seed);
@@ -31,6 +31,7 @@ void check_exact(std::uint32_t seed) {
   o.control_precision = 2.0;
   o.process_noise = 1e-6;
   o.damping = 0.0;
+  o.sweep = sweep_mode;
   const int T = o.steps;
   const double tau = o.duration / T;
 
@@ -114,4 +115,34 @@ TEST_CASE("one undamped sweep solves a linear task exactly in dynamic mode", "[a
   check_exact<AicoMode::dynamic, models::schunk_arm, 3>(4);
   check_exact<AicoMode::dynamic, models::schunk_arm, 7>(5);
   check_exact<AicoMode::dynamic, models::schunk_arm_sdh, 5>(6);
+}
+
+TEST_CASE("the RTS and the backward-message passes give the same beliefs", "[aico][exact]") {
+  constexpr const auto& arm = models::schunk_arm_sdh;
+  using Stack = test::LinearStack<arm, 4>;
+  Stack stack;
+  stack.C = Mat<4, arm.nq>::Random();
+  stack.targets.assign(31, Vec<4>::Random());
+  AicoOptions o;
+  o.steps = 30;
+  o.damping = 0.3;
+  const Vec<arm.nq> q0 = Vec<arm.nq>::Random();
+  o.sweep = SweepMode::symmetric;
+  AicoProblem<arm, Stack> rts(stack, q0, o);
+  o.sweep = SweepMode::local_gauss_newton;
+  AicoProblem<arm, Stack> messages(stack, q0, o);
+  AicoWorkspace ws_a(rts), ws_b(messages);
+  (void)initialise(rts, ws_a);
+  (void)initialise(messages, ws_b);
+  REQUIRE(message_passes(rts, ws_a));
+  REQUIRE(message_passes(messages, ws_b));
+  const auto& a = candidate_beliefs(ws_a);
+  const auto& b = candidate_beliefs(ws_b);
+  for (std::size_t u = 0; u < a.size(); ++u)
+    CHECK((a[u] - b[u]).norm() <= 1e-8 * (1.0 + b[u].norm()));
+}
+
+TEST_CASE("one undamped local Gauss-Newton sweep is exact for a linear task", "[aico][exact]") {
+  check_exact<AicoMode::dynamic, models::schunk_arm, 3>(9, SweepMode::local_gauss_newton);
+  check_exact<AicoMode::kinematic, models::schunk_arm, 3>(10, SweepMode::local_gauss_newton);
 }

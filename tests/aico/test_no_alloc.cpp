@@ -16,6 +16,11 @@ namespace {
 std::atomic<long> g_news{0};
 }  // namespace
 
+// The replacements pair malloc with free; GCC cannot see that through the replaced operators.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#endif
+
 void* operator new(std::size_t n) {
   ++g_news;
   if (void* p = std::malloc(n == 0 ? 1 : n)) return p;

@@ -116,8 +116,8 @@ struct AicoAlgorithm {
     // Forward relocations per step: none in symmetric sweeps (every step is relinearised once, in
     // the backward pass, so a sweep is one damped Gauss-Newton step of the whole trajectory);
     // up to local_iterations local Gauss-Newton steps on each step's marginal otherwise.
-    const bool local = relinearise && p.options().sweep == SweepMode::local_gauss_newton;
-    const int times = local ? p.options().local_iterations : 0;
+    const bool local = p.options().sweep == SweepMode::local_gauss_newton;
+    const int times = relinearise && local ? p.options().local_iterations : 0;
     ws.relocations = 0;
     ws.non_finite = false;
     ws.factor_failed = false;
@@ -146,19 +146,42 @@ struct AicoAlgorithm {
         P.diagonal().array() += ws.alpha;
         eta = out.h[u - 1] + ws.alpha * ws.b_ref[u - 1];
         eta.template head<nq>() += out.r[u - 1];
-        // S_t^-1 = A^-T (P - P (K + P)^-1 P) A^-1 with K = A'WA: (W^-1 + A P^-1 A')^-1.
-        if (!woodbury_update(P, eta, ws.L, ws.Y, ws.z, add_K))
+        // S_t^-1 = A^-T (P - P (K + P)^-1 P) A^-1 with K = A'WA: (W^-1 + A P^-1 A')^-1. The
+        // factor of K + P and eta are kept for the backward pass.
+        ws.eta_forward[u - 1] = eta;
+        if (!woodbury_update(P, eta, ws.L_forward[u - 1], ws.Y, ws.z, add_K))
           return ws.factor_failed = true, false;
         tr.congruence_A_inv(P);
         tr.apply_A_inv_transpose(eta);
       }
+      // The belief of a step inside the forward pass only serves its relocation (and b_T).
+      if (t < T && !local) continue;
       if (!belief(ws, out, t, in.V_inv[u], in.hv[u])) return ws.factor_failed = true, false;
       if (times > 0 && !relocate(p, ws, out, t, in.V_inv[u], in.hv[u], times)) return false;
     }
-    // Backward: the exact smoother at the linearisation the forward pass left, so that the
-    // beliefs b_1..b_T are the damped Gauss-Newton step of one quadratic model (and dynamically
-    // consistent). The terminal message is the one b_T was computed with.
     const auto uT = static_cast<std::size_t>(T);
+    if (!local) {
+      // Backward, symmetric sweeps: Rauch-Tung-Striebel. Given b_{t+1}, x_t only sees its filtered
+      // information (P_t, eta_t) and the transition, so b_t = (K + P_t)^-1 (eta_t + A'W b_{t+1}),
+      // with the factor of the forward pass: O(n^2) a step, the same beliefs as the backward
+      // messages give. Each step is then relinearised at its new belief.
+      if (relinearise && !move_linearisation(p, ws, out, T)) return false;
+      for (int t = T - 1; t >= 1; --t) {
+        const auto u = static_cast<std::size_t>(t);
+        ws.rhs = ws.eta_forward[u] + tr.At_W(out.b[u + 1]);
+        cholesky_solve_in_place(ws.L_forward[u], ws.rhs);
+        out.b[u] = ws.rhs;
+        if (relinearise && !move_linearisation(p, ws, out, t)) return false;
+      }
+      const double tp = p.options().terminal_precision;
+      out.V_inv[uT] = tp * StateMatrix::Identity();
+      out.hv[uT] = tp * out.b[uT];
+      return true;
+    }
+    // Backward, local Gauss-Newton sweeps: the backward messages (which the next sweep's forward
+    // beliefs need) and the beliefs from them; the exact smoother at the linearisation the
+    // forward pass left, so that b_1..b_T are the damped Gauss-Newton step of one quadratic model
+    // (and dynamically consistent). The terminal message is the one b_T was computed with.
     out.V_inv[uT] = in.V_inv[uT];
     out.hv[uT] = in.hv[uT];
     for (int t = T - 1; t >= 1; --t) {

@@ -64,6 +64,8 @@ struct AicoWorkspace {
     buffers[0].resize(n);
     buffers[1].resize(n);
     b_ref.resize(n);
+    L_forward.resize(n);
+    eta_forward.resize(n);
   }
   /// The number of steps the buffers are sized for.
   [[nodiscard]] int steps() const noexcept { return static_cast<int>(b_ref.size()) - 1; }
@@ -77,6 +79,10 @@ struct AicoWorkspace {
   std::array<Buffers, 2> buffers;  ///< accepted and candidate
   int current = 0;                 ///< index of the accepted buffers
   std::vector<State> b_ref;        ///< damping reference: the last accepted beliefs
+  /// Cholesky factors of K + P_t (P_t = S_t^-1 + R_t + alpha I) from the forward pass, reused by
+  /// the Rauch-Tung-Striebel backward pass of symmetric sweeps.
+  std::vector<StateMatrix> L_forward;
+  std::vector<State> eta_forward;  ///< the matching S_t^-1 s_t + r_t + alpha b_ref_t
 
   double alpha = 0.0;          ///< current damping
   double cost = 0.0;           ///< true cost of the accepted trajectory

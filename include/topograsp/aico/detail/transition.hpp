@@ -92,6 +92,19 @@ struct Transition {
     }
     return out;
   }
+  /// A' W x.
+  [[nodiscard]] State At_W(const State& x) const noexcept {
+    State out;
+    if constexpr (Mode == AicoMode::dynamic) {
+      const auto q = x.template head<NQ>();
+      const auto v = x.template tail<NQ>();
+      out.template head<NQ>() = w11 * q + w12 * v;
+      out.template tail<NQ>() = (tau * w11 + w12) * q + (tau * w12 + w22) * v;
+    } else {
+      out = w11 * x;
+    }
+    return out;
+  }
   /// W as a dense matrix.
   [[nodiscard]] StateMatrix dense_W() const noexcept {
     StateMatrix m = StateMatrix::Zero();

@@ -1,0 +1,206 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// SvgLinePlot: a small dependency-free SVG line-plot writer (axes, ticks, labels, legend).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <topograsp/core/error.hpp>
+
+namespace topograsp {
+
+/// A line plot of one or more series written as a standalone SVG document: a frame with "nice"
+/// ticks (1, 2 or 5 times a power of ten) on both axes, axis labels, a title and a legend.
+///
+/// Example: `SvgLinePlot p("Windings", "step t", "w"); p.add_series("gamma_1", t, w1);
+/// p.write("windings.svg");`
+class SvgLinePlot {
+ public:
+  /// A plot with \p title and axis labels \p x_label, \p y_label, \p width x \p height pixels.
+  explicit SvgLinePlot(std::string title = {}, std::string x_label = {}, std::string y_label = {},
+                       int width = 720, int height = 440)
+      : title_(std::move(title)),
+        x_label_(std::move(x_label)),
+        y_label_(std::move(y_label)),
+        width_(width),
+        height_(height) {
+    if (width < 200 || height < 150)
+      detail::throw_invalid_argument("width", "expected a plot of at least 200 x 150 pixels");
+  }
+
+  /// Adds a series drawn as a polyline through (x[i], y[i]), with \p label in the legend.
+  /// \throws topograsp::invalid_argument naming "x" or "y" if the sizes differ, a series is
+  ///         empty or a value is not finite.
+  void add_series(std::string label, std::vector<double> x, std::vector<double> y) {
+    if (x.empty() || x.size() != y.size())
+      detail::throw_invalid_argument("y", "expected as many values as x, and at least one");
+    for (double v : x) require_finite(v, "x");
+    for (double v : y) require_finite(v, "y");
+    series_.push_back({std::move(label), std::move(x), std::move(y)});
+  }
+
+  /// Adds a dashed horizontal reference line at \p y with \p label (e.g. a target value).
+  void add_reference(std::string label, double y) {
+    require_finite(y, "y");
+    references_.emplace_back(std::move(label), y);
+  }
+
+  /// The SVG document.
+  [[nodiscard]] std::string str() const {
+    double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
+    for (const Series& s : series_) {
+      for (double v : s.x) x0 = std::min(x0, v), x1 = std::max(x1, v);
+      for (double v : s.y) y0 = std::min(y0, v), y1 = std::max(y1, v);
+    }
+    for (const auto& r : references_) y0 = std::min(y0, r.second), y1 = std::max(y1, r.second);
+    if (!std::isfinite(x0)) x0 = 0.0, x1 = 1.0;
+    if (!std::isfinite(y0)) y0 = 0.0, y1 = 1.0;
+    const Axis ax = nice_axis(x0, x1), ay = nice_axis(y0, y1);
+    const double left = 70, right = 170, top = 40, bottom = 55;
+    const double pw = width_ - left - right, ph = height_ - top - bottom;
+    const auto px = [&](double v) { return left + (v - ax.lo) / (ax.hi - ax.lo) * pw; };
+    const auto py = [&](double v) { return top + (ax_flip(v, ay))*ph; };
+    std::string o;
+    o += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    o += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(width_) +
+         "\" height=\"" + std::to_string(height_) + "\" viewBox=\"0 0 " + std::to_string(width_) +
+         " " + std::to_string(height_) + "\" font-family=\"sans-serif\" font-size=\"12\">\n";
+    o += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+    // Grid and ticks.
+    for (double v = ax.lo; v <= ax.hi + 0.5 * ax.step; v += ax.step) {
+      const double x = px(v);
+      o += line(x, top, x, top + ph, "#e0e0e0") + line(x, top + ph, x, top + ph + 5, "black");
+      o += text(x, top + ph + 18, number(v, ax.step), "middle");
+    }
+    for (double v = ay.lo; v <= ay.hi + 0.5 * ay.step; v += ay.step) {
+      const double y = py(v);
+      o += line(left, y, left + pw, y, "#e0e0e0") + line(left - 5, y, left, y, "black");
+      o += text(left - 8, y + 4, number(v, ay.step), "end");
+    }
+    o += "<rect x=\"" + fmt(left) + "\" y=\"" + fmt(top) + "\" width=\"" + fmt(pw) +
+         "\" height=\"" + fmt(ph) + "\" fill=\"none\" stroke=\"black\"/>\n";
+    // Labels.
+    o += text(left + 0.5 * pw, 22, title_, "middle", "font-size=\"15\"");
+    o += text(left + 0.5 * pw, height_ - 12, x_label_, "middle");
+    o += "<text x=\"18\" y=\"" + fmt(top + 0.5 * ph) +
+         "\" text-anchor=\"middle\" transform=\"rotate(-90 18 " + fmt(top + 0.5 * ph) + ")\">" +
+         escape(y_label_) + "</text>\n";
+    // Data, references and legend.
+    std::size_t k = 0;
+    double ly = top + 10;
+    for (const Series& s : series_) {
+      const std::string c = colour(k++);
+      o += "<polyline fill=\"none\" stroke=\"" + c + "\" stroke-width=\"2\" points=\"";
+      for (std::size_t i = 0; i < s.x.size(); ++i)
+        o += fmt(px(s.x[i])) + "," + fmt(py(s.y[i])) + " ";
+      o += "\"/>\n";
+      o += line(left + pw + 15, ly, left + pw + 40, ly, c, "stroke-width=\"2\"");
+      o += text(left + pw + 46, ly + 4, s.label, "start");
+      ly += 20;
+    }
+    for (const auto& [label, v] : references_) {
+      const std::string c = colour(k++);
+      o += line(left, py(v), left + pw, py(v), c, "stroke-dasharray=\"6 4\"");
+      o += line(left + pw + 15, ly, left + pw + 40, ly, c, "stroke-dasharray=\"6 4\"");
+      o += text(left + pw + 46, ly + 4, label, "start");
+      ly += 20;
+    }
+    o += "</svg>\n";
+    return o;
+  }
+
+  /// Writes the SVG document to \p path.
+  /// \throws topograsp::invalid_argument naming "path" if the file cannot be written.
+  void write(const std::string& path) const {
+    std::ofstream f(path);
+    if (!f) detail::throw_invalid_argument("path", "cannot open " + path + " for writing");
+    f << str();
+    if (!f) detail::throw_invalid_argument("path", "cannot write " + path);
+  }
+
+ private:
+  struct Series {
+    std::string label;
+    std::vector<double> x, y;
+  };
+  struct Axis {
+    double lo, hi, step;
+  };
+
+  // An axis from lo to hi widened to multiples of a step of 1, 2 or 5 times a power of ten,
+  // with about 4 to 10 ticks.
+  static Axis nice_axis(double lo, double hi) {
+    if (hi - lo <= 1e-12 * std::max(1.0, std::abs(lo))) {
+      const double pad = std::max(0.5, 0.1 * std::abs(lo));
+      lo -= pad;
+      hi += pad;
+    }
+    const double raw = (hi - lo) / 6.0;
+    const double mag = std::pow(10.0, std::floor(std::log10(raw)));
+    double step = 10.0 * mag;
+    for (double m : {1.0, 2.0, 5.0})
+      if (m * mag >= raw) {
+        step = m * mag;
+        break;
+      }
+    return {std::floor(lo / step) * step, std::ceil(hi / step) * step, step};
+  }
+  static double ax_flip(double v, const Axis& a) { return (a.hi - v) / (a.hi - a.lo); }
+  static std::string fmt(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.2f", v);
+    return b;
+  }
+  static std::string number(double v, double step) {
+    const int digits = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
+    char b[32];
+    std::snprintf(b, sizeof b, "%.*f", digits, std::abs(v) < 0.5 * step ? 0.0 : v);
+    return b;
+  }
+  static std::string escape(std::string_view s) {
+    std::string o;
+    for (char c : s) {
+      if (c == '<')
+        o += "&lt;";
+      else if (c == '>')
+        o += "&gt;";
+      else if (c == '&')
+        o += "&amp;";
+      else if (c == '"')
+        o += "&quot;";
+      else
+        o += c;
+    }
+    return o;
+  }
+  static std::string line(double x1, double y1, double x2, double y2, const std::string& colour,
+                          const std::string& extra = {}) {
+    return "<line x1=\"" + fmt(x1) + "\" y1=\"" + fmt(y1) + "\" x2=\"" + fmt(x2) + "\" y2=\"" +
+           fmt(y2) + "\" stroke=\"" + colour + "\" " + extra + "/>\n";
+  }
+  static std::string text(double x, double y, std::string_view s, const char* anchor,
+                          const std::string& extra = {}) {
+    return "<text x=\"" + fmt(x) + "\" y=\"" + fmt(y) + "\" text-anchor=\"" + anchor + "\" " +
+           extra + ">" + escape(s) + "</text>\n";
+  }
+  static std::string colour(std::size_t k) {
+    static constexpr const char* palette[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e",
+                                              "#9467bd", "#8c564b", "#17becf"};
+    return palette[k % (sizeof palette / sizeof palette[0])];
+  }
+
+  std::string title_, x_label_, y_label_;
+  int width_, height_;
+  std::vector<Series> series_;
+  std::vector<std::pair<std::string, double>> references_;
+};
+
+}  // namespace topograsp
