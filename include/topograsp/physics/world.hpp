@@ -146,6 +146,7 @@ class World {
     bodies_.push_back(b);
     targets_.push_back(Target{b.R, b.x, false});
     saved_.push_back({});
+    turned_.push_back(M3::Identity());
     update_colliders(index);
     // Contact slots with every earlier body that this one can touch.
     for (int j = 0; j < index; ++j) {
@@ -595,15 +596,29 @@ class World {
 
   void solve(S h, bool use_bias) noexcept {
     const S inv_h = S(1) / h;
+    // How far each body has turned since the step began.
+    for (std::size_t i = 0; i < bodies_.size(); ++i)
+      turned_[i] = bodies_[i].type == BodyType::fixed ? M3::Identity()
+                                                      : M3(bodies_[i].R * saved_[i].R.transpose());
     for (Manifold<S>& m : manifolds_) {
       if (m.count == 0) continue;
       RigidBody<S>& A = bodies_[static_cast<std::size_t>(m.body_a)];
       RigidBody<S>& B = bodies_[static_cast<std::size_t>(m.body_b)];
-      const Saved& sa = saved_[static_cast<std::size_t>(m.body_a)];
       // The contact frame turns with body A, and the anchors with their bodies, so that a grasp
       // turning by several degrees a step keeps consistent contact velocities.
-      const M3 dR = A.type == BodyType::fixed ? M3::Identity() : M3(A.R * sa.R.transpose());
+      const M3& dR = turned_[static_cast<std::size_t>(m.body_a)];
       const S mu = m.friction;
+      // Velocities in registers; inverse masses are zero for kinematic and fixed bodies.
+      V3 vA = A.v, wA = A.w, vB = B.v, wB = B.w;
+      const S mA = A.inv_mass, mB = B.inv_mass;
+      const M3& iA = A.inv_inertia;
+      const M3& iB = B.inv_inertia;
+      const auto push = [&](const ContactPoint<S>& c, const V3& P) {
+        vA -= mA * P;
+        wA -= iA * c.ra.cross(P);
+        vB += mB * P;
+        wB += iB * c.rb.cross(P);
+      };
       S total = S(0);
       for (int k = 0; k < m.count; ++k) {
         ContactPoint<S>& c = m.points[static_cast<std::size_t>(k)];
@@ -621,7 +636,7 @@ class World {
           mass_scale = c.mass_scale;
           impulse_scale = c.impulse_scale;
         }
-        const V3 dv = B.v + B.w.cross(c.rb) - A.v - A.w.cross(c.ra);
+        const V3 dv = vB + wB.cross(c.rb) - vA - wA.cross(c.ra);
         const S vn = dv.dot(c.n_now);
         const S impulse =
             -c.normal_mass * mass_scale * (vn + bias) - impulse_scale * c.normal_impulse;
@@ -629,9 +644,7 @@ class World {
         const S d = next - c.normal_impulse;
         c.normal_impulse = next;
         total += next;
-        const V3 P = d * c.n_now;
-        apply(A, -P, c.ra);
-        apply(B, P, c.rb);
+        push(c, V3(d * c.n_now));
       }
       // Friction after the normal impulses, limited by them (the order of Box2D v3: with soft
       // contacts, the biased solve lowers the normal impulse that the relax pass restores).
@@ -639,7 +652,7 @@ class World {
         ContactPoint<S>& c = m.points[static_cast<std::size_t>(k)];
         c.t1_now = dR * c.t1;
         c.t2_now = dR * c.t2;
-        const V3 dv = B.v + B.w.cross(c.rb) - A.v - A.w.cross(c.ra);
+        const V3 dv = vB + wB.cross(c.rb) - vA - wA.cross(c.ra);
         const Eigen::Matrix<S, 2, 1> vt(dv.dot(c.t1_now), dv.dot(c.t2_now));
         Eigen::Matrix<S, 2, 1> next = c.tangent_impulse - c.tangent_mass * vt;
         // Circular cone: |friction| <= mu * normal. Sticking uses the full 2x2 effective mass;
@@ -653,21 +666,27 @@ class World {
         }
         const Eigen::Matrix<S, 2, 1> d = next - c.tangent_impulse;
         c.tangent_impulse = next;
-        const V3 P = d.x() * c.t1_now + d.y() * c.t2_now;
-        apply(A, -P, c.ra);
-        apply(B, P, c.rb);
+        push(c, V3(d.x() * c.t1_now + d.y() * c.t2_now));
       }
       if (m.twist_mass > S(0)) {
         // Torsional friction: |torque impulse| <= mu * radius * normal impulse.
         m.twist_axis_now = dR * m.twist_axis;
         const S limit = mu * static_cast<S>(options_.torsional_friction_radius) * total;
-        const S wn = (B.w - A.w).dot(m.twist_axis_now);
+        const S wn = (wB - wA).dot(m.twist_axis_now);
         const S next = physics_detail::clamp<S>(m.twist_impulse - m.twist_mass * wn, -limit, limit);
         const S d = next - m.twist_impulse;
         m.twist_impulse = next;
         const V3 L = d * m.twist_axis_now;
-        if (A.type == BodyType::dynamic) A.w -= A.inv_inertia * L;
-        if (B.type == BodyType::dynamic) B.w += B.inv_inertia * L;
+        wA -= iA * L;
+        wB += iB * L;
+      }
+      if (A.type == BodyType::dynamic) {
+        A.v = vA;
+        A.w = wA;
+      }
+      if (B.type == BodyType::dynamic) {
+        B.v = vB;
+        B.w = wB;
       }
     }
   }
@@ -690,6 +709,7 @@ class World {
   std::vector<RigidBody<S>> bodies_;
   std::vector<Target> targets_;
   std::vector<Saved> saved_;
+  std::vector<M3> turned_;  // rotation of each body since the step began (solver scratch)
   std::vector<Collider<S>> colliders_;
   std::vector<Polytope<S>> polytopes_;
   std::vector<Manifold<S>> manifolds_;

@@ -1,0 +1,207 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Physics benchmarks: steps per second of the SDH holding a bottle and of the human hand holding a
+// hammer, the same scenes in MuJoCo 2.2 (when found) at the same time step, the ratio, and the
+// time of one full shake test.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+#include <benchmark/benchmark.h>
+#include <topograsp/io/mjcf.hpp>
+#include <topograsp/model/models.hpp>
+#include <topograsp/physics.hpp>
+
+#ifdef TOPOGRASP_HAVE_MUJOCO
+#include <unistd.h>
+
+#include <mujoco/mujoco.h>
+#endif
+
+using namespace topograsp;
+
+namespace {
+
+// Steps per measured batch: each batch restarts from the grasp just closed, so both engines
+// simulate the same 2 s of holding.
+constexpr int batch = 120;
+
+Eigen::Isometry3d frame(const Eigen::Matrix3d& R, const Eigen::Vector3d& p) {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = R;
+  T.translation() = p;
+  return T;
+}
+
+// A 0.5 l PET bottle: body r = 35 mm, 200 mm tall; neck r = 13 mm, 50 mm; 0.55 kg full.
+HandScene<models::schunk_sdh> sdh_bottle() {
+  Eigen::Matrix3d R;
+  R << 0, 0, 1, 1, 0, 0, 0, 1, 0;  // fingers along world x, the bottle upright along hand y
+  const Eigen::Isometry3d hand = frame(R, Eigen::Vector3d(0, 0, 0.3));
+  ObjectSpec bottle;
+  bottle.shapes = {cylinder("", Pose{}, 0.035, 0.1), cylinder("", at(0, 0, 0.125), 0.013, 0.025)};
+  const Eigen::Isometry3d in_hand =
+      frame(Eigen::AngleAxisd(-pi / 2, Eigen::Vector3d::UnitX()).toRotationMatrix(),
+            Eigen::Vector3d(0, 0, 0.15));
+  bottle.pose = to_pose(hand * in_hand);
+  bottle.mass = 0.55;
+  Vec<7> q;
+  q << 0.0, -0.6, 0.3, -0.6, 0.3, -0.6, 0.3;
+  HandScene<models::schunk_sdh> scene(hand, q, bottle);
+  (void)close_hand(scene);
+  return scene;
+}
+
+// A claw hammer: wooden handle r = 16 mm, 280 mm long; steel head 120 x 25 x 25 mm; 0.6 kg.
+HandScene<models::human_hand> human_hammer() {
+  Eigen::Matrix3d R;
+  R << 0, 0, 1, -1, 0, 0, 0, -1, 0;  // fingers along world x, palm facing down the world -y
+  const Eigen::Isometry3d hand = frame(R, Eigen::Vector3d(0, 0, 0.3));
+  ObjectSpec hammer;
+  hammer.shapes = {cylinder("", Pose{}, 0.016, 0.14),
+                   box("", at(0, 0, 0.1525), {0.06, 0.0125, 0.0125})};
+  // The handle across the palm (hand y), gripped 60 mm below its middle.
+  const Eigen::Isometry3d in_hand =
+      frame(Eigen::AngleAxisd(-pi / 2, Eigen::Vector3d::UnitX()).toRotationMatrix(),
+            Eigen::Vector3d(0.032, -0.06, 0.10));
+  hammer.pose = to_pose(hand * in_hand);
+  hammer.mass = 0.6;
+  Vec<20> q = Vec<20>::Zero();
+  q[17] = 0.3;  // thumb CMC2 open
+  HandScene<models::human_hand> scene(hand, q, hammer);
+  (void)close_hand(scene);
+  return scene;
+}
+
+template <class Scene>
+void run_topograsp(benchmark::State& state, const Scene& start) {
+  Scene scene = start;
+  for (auto _ : state) {
+    scene = start;  // same capacity: no allocation
+    for (int i = 0; i < batch; ++i) benchmark::DoNotOptimize(scene.step());
+  }
+  state.counters["steps/s"] = benchmark::Counter(static_cast<double>(state.iterations() * batch),
+                                                 benchmark::Counter::kIsRate);
+  state.counters["contacts"] = scene.hand_contacts();
+  state.counters["held"] =
+      (scene.object_in_hand().translation() - start.object_in_hand().translation()).norm() < 0.02;
+}
+
+void BM_topograsp_sdh_bottle(benchmark::State& state) {
+  static const auto scene = sdh_bottle();
+  run_topograsp(state, scene);
+}
+BENCHMARK(BM_topograsp_sdh_bottle)->Unit(benchmark::kMicrosecond);
+
+void BM_topograsp_human_hammer(benchmark::State& state) {
+  static const auto scene = human_hammer();
+  run_topograsp(state, scene);
+}
+BENCHMARK(BM_topograsp_human_hammer)->Unit(benchmark::kMicrosecond);
+
+template <class Scene>
+void run_shake(benchmark::State& state, const Scene& start) {
+  Scene scene = start;
+  ShakeResult r;
+  for (auto _ : state) {
+    scene = start;
+    r = shake_test(scene);
+    benchmark::DoNotOptimize(r);
+  }
+  state.counters["stable"] = r.stable;
+  state.counters["steps"] = r.steps;
+}
+
+void BM_shake_test_sdh_bottle(benchmark::State& state) {
+  static const auto scene = sdh_bottle();
+  run_shake(state, scene);
+}
+BENCHMARK(BM_shake_test_sdh_bottle)->Unit(benchmark::kMillisecond);
+
+void BM_shake_test_human_hammer(benchmark::State& state) {
+  static const auto scene = human_hammer();
+  run_shake(state, scene);
+}
+BENCHMARK(BM_shake_test_human_hammer)->Unit(benchmark::kMillisecond);
+
+#ifdef TOPOGRASP_HAVE_MUJOCO
+template <class Scene>
+void run_mujoco(benchmark::State& state, const Scene& scene) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("topograsp_bench_" + std::to_string(::getpid()) + ".xml");
+  {
+    std::ofstream f(path);
+    write_mjcf(f, scene);
+  }
+  char error[1000] = "";
+  mjModel* m = mj_loadXML(path.c_str(), nullptr, error, sizeof(error));
+  std::filesystem::remove(path);
+  if (m == nullptr) {
+    state.SkipWithError(error);
+    return;
+  }
+  mjData* d = mj_makeData(m);
+  for (auto _ : state) {
+    mj_resetData(m, d);
+    for (int i = 0; i < batch; ++i) mj_step(m, d);
+    benchmark::DoNotOptimize(d->qpos[0]);
+  }
+  state.counters["steps/s"] = benchmark::Counter(static_cast<double>(state.iterations() * batch),
+                                                 benchmark::Counter::kIsRate);
+  state.counters["contacts"] = d->ncon;
+  mj_deleteData(d);
+  mj_deleteModel(m);
+}
+
+void BM_mujoco_sdh_bottle(benchmark::State& state) {
+  static const auto scene = sdh_bottle();
+  run_mujoco(state, scene);
+}
+BENCHMARK(BM_mujoco_sdh_bottle)->Unit(benchmark::kMicrosecond);
+
+void BM_mujoco_human_hammer(benchmark::State& state) {
+  static const auto scene = human_hammer();
+  run_mujoco(state, scene);
+}
+BENCHMARK(BM_mujoco_human_hammer)->Unit(benchmark::kMicrosecond);
+#endif
+
+// Console output plus, at the end, MuJoCo's CPU time per step over topograsp's for each scene
+// (CPU time: the 2-core CI machine is shared, so wall time is noisy).
+class RatioReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    for (const Run& r : runs)
+      if (r.run_type == Run::RT_Iteration && r.iterations > 0)
+        seconds_[r.benchmark_name()] = r.cpu_accumulated_time / static_cast<double>(r.iterations);
+    ConsoleReporter::ReportRuns(runs);
+  }
+  void Finalize() override {
+    ConsoleReporter::Finalize();
+    for (const char* scene : {"sdh_bottle", "human_hammer"}) {
+      const auto t = seconds_.find(std::string("BM_topograsp_") + scene);
+      const auto m = seconds_.find(std::string("BM_mujoco_") + scene);
+      if (t == seconds_.end()) continue;
+      std::printf("%-13s topograsp %8.0f steps/s", scene, batch / t->second);
+      if (m != seconds_.end())
+        std::printf("   MuJoCo %8.0f steps/s   speed-up %.2fx", batch / m->second,
+                    m->second / t->second);
+      std::printf("   (dt = 1/60 s)\n");
+    }
+  }
+
+ private:
+  std::map<std::string, double> seconds_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+  return 0;
+}
