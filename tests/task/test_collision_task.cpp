@@ -55,9 +55,10 @@ void check_collision_jacobian(std::uint32_t seed) {
     const CollisionTask<M> bottle(test::bottle(near_shape(d, shape, rng, &test::bottle)), 0.02);
     const CollisionTask<M> hammer(test::hammer(near_shape(d, shape, rng, &test::hammer)), 0.02);
     // Deep inside a cylinder the penetration depth has kinks (the shortest way out switches
-    // between the side and a cap): there the gradient is that of one side.
-    CHECK(test::piecewise_jacobian_error(bottle, q) < 3e-3);
-    CHECK(test::piecewise_jacobian_error(hammer, q) < 3e-3);
+    // between the side and a cap): there the gradient is that of one side. EPA's witness points
+    // on a curved rim are good to about 1e-5 m, which the factor 2/m of the potential amplifies.
+    CHECK(test::piecewise_jacobian_error(bottle, q) < 1e-2);
+    CHECK(test::piecewise_jacobian_error(hammer, q) < 1e-2);
     if (blocks.value(d)[0] > 0.0) ++nonzero;
   }
   CHECK(nonzero >= 6);
