@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// The results of the grasp-transfer experiment as JSON (results.json, schema in
+/// docs/transfer.md) and each tested grasp as an MJCF scene.
+#pragma once
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include <topograsp/grasp/experiment.hpp>
+#include <topograsp/io/json.hpp>
+#include <topograsp/io/mjcf.hpp>
+
+namespace topograsp {
+
+/// The file name (relative to the output folder) of the MJCF scene of a grasp:
+/// "scenes/<object>_<id>_<method>.xml", method "human" for the demonstration.
+[[nodiscard]] inline std::string scene_path(std::string_view object, int id,
+                                            std::string_view method) {
+  return "scenes/" + std::string(object) + "_" + std::to_string(id) + "_" + std::string(method) +
+         ".xml";
+}
+
+/// The MJCF text of a closed grasp: hand model \p M at \p hand_pose with joints \p q, the object
+/// where it was after closing.
+template <const auto& M>
+[[nodiscard]] std::string grasp_mjcf(const GraspObject& object, const Eigen::Isometry3d& hand_pose,
+                                     const Vec<M.nq>& q, const Eigen::Isometry3d& object_pose,
+                                     const TransferOptions& options) {
+  HandSceneOptions scene_options = options.sim.scene;
+  scene_options.friction = object.friction;
+  ObjectSpec spec = object_spec(object);
+  spec.pose = to_pose(object_pose);
+  const HandScene<M> scene(hand_pose, q, spec, scene_options);
+  return to_mjcf(scene);
+}
+
+namespace detail {
+inline Json json_vector(const auto& v) {
+  // Built in place: moving number-holding Json temporaries into a vector trips GCC 12's
+  // -Wmaybe-uninitialized on std::variant.
+  Json::Array a;
+  a.reserve(static_cast<std::size_t>(v.size()));
+  for (Eigen::Index i = 0; i < v.size(); ++i) a.emplace_back(static_cast<double>(v[i]));
+  return Json(std::move(a));
+}
+}  // namespace detail
+
+/// results.json: {"config": {...}, "objects": [...], "grasps": [...]}; see docs/transfer.md.
+[[nodiscard]] inline Json results_json(const ExperimentConfig& config,
+                                       const std::vector<ObjectResult>& results) {
+  Json cfg = Json::object();
+  Json objects = Json::array(), methods = Json::array();
+  for (const GraspObject& o : config.objects) objects.push_back(o.name);
+  for (const TransferMethod m : config.methods) methods.push_back(to_string(m));
+  cfg.set("objects", objects);
+  cfg.set("methods", methods);
+  cfg.set("jobs", config.jobs);
+  cfg.set("seed", std::to_string(config.seed));
+  cfg.set("shard",
+          std::to_string(config.shard_index + 1) + "/" + std::to_string(config.shard_count));
+  cfg.set("max_hypotheses", config.max_hypotheses);
+  cfg.set("friction_from_object", true);
+  cfg.set("hand_stiffness", config.transfer.sim.scene.stepper.hand_stiffness);
+  cfg.set("squeeze", config.transfer.sim.close.squeeze);
+  cfg.set("shake_steps", config.transfer.sim.shake.shake_steps);
+  cfg.set("aico_steps", config.transfer.aico.steps);
+  Json out_objects = Json::array();
+  Json grasps = Json::array();
+  for (const ObjectResult& r : results) {
+    Json o = Json::object();
+    o.set("name", r.object.name);
+    o.set("hypotheses", r.hypotheses);
+    o.set("stable_human", r.stable_human());
+    Json ms = Json::object();
+    for (const MethodSummary& m : r.methods) {
+      Json s = Json::object();
+      s.set("tested", m.tested);
+      s.set("stable", m.stable);
+      s.set("rate", m.rate());
+      ms.set(to_string(m.method), s);
+    }
+    o.set("methods", ms);
+    out_objects.push_back(o);
+    for (const HumanGrasp& g : r.human) {
+      if (!g.reached) continue;
+      Json rec = Json::object();
+      rec.set("object", r.object.name);
+      rec.set("id", g.id);
+      rec.set("method", "human");
+      rec.set("stable", g.stable());
+      rec.set("scene", scene_path(r.object.name, g.id, "human"));
+      rec.set("winding_human", detail::json_vector(g.windings));
+      rec.set("winding_robot", Json::array());
+      rec.set("plan_ms", 0.0);
+      rec.set("sweeps", 0);
+      rec.set("reason", std::string(g.shake.reason));
+      grasps.push_back(rec);
+    }
+    for (std::size_t m = 0; m < r.methods.size(); ++m) {
+      for (std::size_t k = 0; k < r.transfers[m].size(); ++k) {
+        const RobotGrasp& t = r.transfers[m][k];
+        const int id = r.transferred_ids[k];
+        const HumanGrasp& g = *std::find_if(r.human.begin(), r.human.end(),
+                                            [&](const HumanGrasp& h) { return h.id == id; });
+        Json rec = Json::object();
+        rec.set("object", r.object.name);
+        rec.set("id", id);
+        rec.set("method", to_string(r.methods[m].method));
+        rec.set("stable", t.stable());
+        rec.set("scene", t.planned ? Json(scene_path(r.object.name, id, t.method)) : Json());
+        rec.set("winding_human", detail::json_vector(g.descriptor.values));
+        rec.set("winding_robot", detail::json_vector(t.winding));
+        rec.set("plan_ms", t.plan_ms);
+        rec.set("sweeps", t.sweeps);
+        rec.set("reason", t.planned ? std::string(t.shake.reason) : t.reason);
+        grasps.push_back(rec);
+      }
+    }
+  }
+  Json doc = Json::object();
+  doc.set("config", cfg);
+  doc.set("objects", out_objects);
+  doc.set("grasps", grasps);
+  return doc;
+}
+
+}  // namespace topograsp
