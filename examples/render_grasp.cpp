@@ -7,7 +7,7 @@
 // it touches, then every closing joint turns in small steps until the links after it touch the
 // hammer (the distal joints keep curling after the proximal ones stop).
 //
-//   render_grasp [--out DIR]
+//   render_grasp [--out DIR] [--view X,Y,Z]   (the camera's view direction, world frame)
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -140,7 +140,7 @@ SvgLinePlot closing_plot(const KinematicGrasp<M>& g, const std::string& hand) {
 
 int usage(const char* argv0, int status) {
   std::fprintf(status == 0 ? stdout : stderr,
-               "usage: %s [--out DIR]\n"
+               "usage: %s [--out DIR] [--view X,Y,Z]\n"
                "Renders the human hand and the Schunk SDH holding the hammer to SVG files.\n",
                argv0);
   return status;
@@ -150,11 +150,16 @@ int usage(const char* argv0, int status) {
 
 int main(int argc, char** argv) {
   std::string out = "render-out";
+  // The default view: from the handle's free end, to the side of the fingers, a little above.
+  Vec3 view(0.75, 0.8, -0.45);
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--help" || a == "-h") return usage(argv[0], 0);
     if (a == "--out" && i + 1 < argc)
       out = argv[++i];
+    else if (a == "--view" && i + 1 < argc &&
+             std::sscanf(argv[i + 1], "%lf,%lf,%lf", &view[0], &view[1], &view[2]) == 3)
+      ++i;
     else
       return usage(argv[0], 2);
   }
@@ -171,13 +176,15 @@ int main(int argc, char** argv) {
     const auto h = grasp<human, models::human_hand_free>(
         hammer, human_hand_axes, Vec3(-0.05, 0.0, 0.0), Vec3(0, 0, -1), Vec3(0, -1, 0), pre);
     constexpr auto& sdh = models::schunk_sdh;
-    Vec<sdh.nq> sdh_pre = Vec<sdh.nq>::Zero();
+    Vec<sdh.nq> sdh_pre = Vec<sdh.nq>::Zero();  // fingers spread open around the handle
+    for (const char* j : {"finger_12", "finger_22", "thumb_2"}) sdh_pre[sdh.find_joint(j)] = -0.6;
     const auto s = grasp<sdh, models::schunk_sdh_free>(
         hammer, gripper_hand_axes, Vec3(-0.05, 0.0, 0.0), Vec3(0, 0, -1), Vec3(0, 1, 0), sdh_pre);
 
     const SvgScene human_scene = scene_of(hammer, h, svg_colours::skin);
     const SvgScene sdh_scene = scene_of(hammer, s, svg_colours::robot);
-    SvgCamera camera;  // the default: from the front left, a little above
+    SvgCamera camera;
+    camera.direction = view;
     camera.width = 560;
     camera.height = 440;
     SvgScene titled = human_scene;
