@@ -20,8 +20,18 @@ namespace topograsp {
 
 /// The parameters of the grasp simulations shared by the demonstrations and the transfers.
 struct GraspSimOptions {
-  HandSceneOptions scene{};    ///< stepper and hand-object friction (the object's own is ignored)
-  CloseOptions close{};        ///< closing until contact and the squeeze
+  /// The stepper (the friction is the object's own). Hand contacts of 8000 N/m: firm finger pads.
+  HandSceneOptions scene = [] {
+    HandSceneOptions o;
+    o.stepper.hand_stiffness = 8000.0;
+    return o;
+  }();
+  /// Closing until contact, then a squeeze of 10 degrees past contact: a firm grip.
+  CloseOptions close = [] {
+    CloseOptions o;
+    o.squeeze = deg(10.0);
+    return o;
+  }();
   ShakeOptions shake{};        ///< the stability protocol
   double contact_gap = 0.002;  ///< how close the approach brings the hand to the object (m)
   double standoff = 0.12;      ///< where the approach starts, back from the face (m)
@@ -54,6 +64,8 @@ struct HumanGrasp {
   ShakeResult shake;                 ///< the stability verdict
   Vec<4> windings = Vec<4>::Zero();  ///< w of gamma_1 (index) .. gamma_4 (pinky)
   WindingDescriptor descriptor;      ///< the two largest, which curves
+  /// Where the object was after closing and squeezing (it starts at the identity).
+  Eigen::Isometry3d object_pose = Eigen::Isometry3d::Identity();
   [[nodiscard]] bool stable() const noexcept { return reached && shake.stable; }
 };
 
@@ -91,6 +103,7 @@ struct HumanGrasp {
   const auto closed = close_hand(scene, options.close);
   g.q = closed.q_squeezed;
   g.touching_joints = closed.touching_joints;
+  g.object_pose = scene.object_pose();
   g.shake = shake_test(scene, options.shake);
   // The windings of the closed hand around the centre of mass.
   Vec<26> qc = *touched;

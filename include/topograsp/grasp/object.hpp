@@ -4,6 +4,7 @@
 /// (for box-based grasp hypotheses); and the built-in objects.
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -79,10 +80,32 @@ inline GraspBox box_of(const ShapeSpec& s) {
   }
   return b;
 }
+// Splits a box along its longest axis into equal pieces no longer than max_length, as BADGr's
+// fit-and-split decomposes long parts (a hand grasps a part of a handle, not all of it).
+inline void split_box(const GraspBox& b, double max_length, std::vector<GraspBox>& out) {
+  std::size_t axis = 0;
+  for (std::size_t k = 1; k < 3; ++k)
+    if (b.half[k] > b.half[axis]) axis = k;
+  const int n = static_cast<int>(std::ceil(2.0 * b.half[axis] / max_length - 1e-9));
+  if (n <= 1) {
+    out.push_back(b);
+    return;
+  }
+  const Vec3 dir = b.pose.rotation().col(static_cast<Eigen::Index>(axis));
+  for (int i = 0; i < n; ++i) {
+    GraspBox piece = b;
+    piece.half[axis] = b.half[axis] / n;
+    const Vec3 centre = b.pose.translation() + ((2.0 * i + 1.0) / n - 1.0) * b.half[axis] * dir;
+    piece.pose.p = {centre.x(), centre.y(), centre.z()};
+    out.push_back(piece);
+  }
+}
+/// Parts longer than this are split into boxes for the hypotheses (m).
+inline constexpr double max_box_length = 0.12;
 inline GraspObject make(std::string name, std::vector<ShapeSpec> parts, double mass,
                         double friction) {
   GraspObject o{std::move(name), std::move(parts), mass, friction, {}};
-  for (const ShapeSpec& s : o.parts) o.boxes.push_back(box_of(s));
+  for (const ShapeSpec& s : o.parts) split_box(box_of(s), max_box_length, o.boxes);
   return o;
 }
 }  // namespace detail

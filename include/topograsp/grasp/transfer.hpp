@@ -47,6 +47,9 @@ struct TransferOptions {
   double limit_precision = 1e3;  ///< joint limits, as a penalty
   /// Least-squares iterations of the fingertip mapping.
   int fingertip_iterations = 100;
+  /// Weight of the fingertip fit's pull toward the transplant pose and the pre-shape, per m^2 or
+  /// rad^2, against the tip errors in m^2.
+  double fingertip_prior = 1e-2;
 };
 
 /// A transferred grasp: where the SDH ended (object frame), how it was planned, the shake test.
@@ -61,6 +64,9 @@ struct RobotGrasp {
   double plan_ms = 0.0;         ///< time of the method's own planning (ms)
   int sweeps = 0;               ///< AICO sweeps (topological only)
   ShakeResult shake;
+  /// Where the object was after closing and squeezing (it starts at the identity): with
+  /// hand_pose and q_closed, the grasp that the shake test started from.
+  Eigen::Isometry3d object_pose = Eigen::Isometry3d::Identity();
   [[nodiscard]] bool stable() const noexcept { return planned && shake.stable; }
 };
 
@@ -119,6 +125,7 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
   r.q_open = q_open;
   r.q_closed = closed.q_squeezed;
   r.winding = detail::sdh_windings(object, root, closed.q_squeezed);
+  r.object_pose = scene.object_pose();
   r.shake = shake_test(scene, options.sim.shake);
 }
 
@@ -190,43 +197,47 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
   forward_kinematics(hd, g.q);
   const std::array<Vec3, 3> goal{g.hand_pose * hd.frame_p[h.frame("thumb_tip")],
                                  g.hand_pose * hd.frame_p[h.frame("index_tip")],
-                                 g.hand_pose * hd.frame_p[h.frame("middle_tip")]};
+                                 g.hand_pose * hd.frame_p[h.frame("ring_tip")]};
   const std::array<int, 3> tips{f.frame("thumb_tip"), f.frame("tip_1"), f.frame("tip_2")};
   const Eigen::Isometry3d target = detail::sdh_grasp_target(g);
   Vec<13> q = place_frame<f>(target, f.frame("grasp_centre"), options.sdh_preshape);
   const Vec<13> lo = lower_limits<f>(), hi = upper_limits<f>();
+  // Residual: the three tip errors (m), then a weak pull toward the transplant pose and the
+  // pre-shape (weight options.fingertip_prior per m or rad), which keeps the under-determined fit
+  // (13 unknowns, 9 equations) from drifting.
+  const Vec<13> q_ref = q;
+  const double w = std::sqrt(options.fingertip_prior);
   KinematicsData<f> d;
-  double lambda = 1e-3;
-  const auto residual = [&](const Vec<13>& x, Vec<9>& e) {
+  const auto residual = [&](const Vec<13>& x, Vec<22>& e) {
     forward_kinematics(d, x);
     for (std::size_t k = 0; k < 3; ++k)
       e.segment<3>(3 * static_cast<int>(k)) =
           d.frame_p[static_cast<std::size_t>(tips[k])] - goal[k];
+    e.tail<13>() = w * (x - q_ref);
     return e.squaredNorm();
   };
-  Vec<9> e;
+  Vec<22> e;
   double cost = residual(q, e);
+  double lambda = 1e-3;
+  Mat<22, 13> J = Mat<22, 13>::Zero();
+  J.bottomRows<13>() = w * Mat<13, 13>::Identity();
   for (int it = 0; it < options.fingertip_iterations; ++it) {
-    Mat<9, 13> J;
     for (std::size_t k = 0; k < 3; ++k)
       J.middleRows<3>(3 * static_cast<int>(k)) = frame_position_jacobian(d, tips[k]);
     const Mat<13, 13> H = J.transpose() * J + lambda * Mat<13, 13>::Identity();
-    const Vec<13> step = -H.ldlt().solve(J.transpose() * e);
-    const Vec<13> trial = (q + step).cwiseMax(lo).cwiseMin(hi);
-    Vec<9> et;
+    const Vec<13> trial = (q - H.ldlt().solve(J.transpose() * e)).cwiseMax(lo).cwiseMin(hi);
+    Vec<22> et;
     const double c = residual(trial, et);
     if (c < cost) {
+      const bool settled = cost - c < 1e-12;
       q = trial;
       e = et;
-      lambda = std::max(lambda / 3.0, 1e-9);
-      if (cost - c < 1e-12) {
-        cost = c;
-        break;
-      }
       cost = c;
+      lambda = std::max(lambda / 3.0, 1e-9);
+      if (settled) break;
     } else {
       lambda *= 10.0;
-      (void)residual(q, e);
+      (void)residual(q, e);  // restore the kinematics of q
     }
   }
   forward_kinematics(d, q);
