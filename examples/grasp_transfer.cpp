@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <topograsp/grasp/experiment.hpp>
+#include <topograsp/io/report.hpp>
 #include <topograsp/io/results.hpp>
 
 namespace {
@@ -32,6 +33,7 @@ options:
   --seed S         seed of the shake tests (default 1); same seed, same results
   --shard K/N      run only hypotheses with id % N == K - 1 (1 <= K <= N), for job arrays
   --max-hypotheses M  only the first M hypotheses of each object (default all)
+  --figures        also write DIR/figures/*.svg and DIR/index.html (Fig. 5-7, Table I)
   --quiet          no progress on stderr
   --help           this text
 )";
@@ -40,6 +42,7 @@ struct Cli {
   ExperimentConfig config;
   std::filesystem::path out = "grasp_transfer_out";
   bool quiet = false;
+  bool figures = false;
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -97,6 +100,8 @@ Cli parse(int argc, char** argv) {
         throw std::invalid_argument("--shard: expected 1 <= K <= N, got \"" + s + "\"");
       cli.config.shard_index = k - 1;
       cli.config.shard_count = n;
+    } else if (arg == "--figures") {
+      cli.figures = true;
     } else if (arg == "--quiet") {
       cli.quiet = true;
     } else {
@@ -208,9 +213,11 @@ int main(int argc, char** argv) {
         }
     }
     write_text(cli.out / "results.json", results_json(cli.config, results).dump(2) + "\n");
+    if (cli.figures) (void)write_report(cli.out, results);
     print_table(cli.config, results);
-    std::printf("\n%.1f s with %d job(s); results in %s\n", seconds, cli.config.jobs,
-                (cli.out / "results.json").string().c_str());
+    std::printf("\n%.1f s with %d job(s); results in %s%s\n", seconds, cli.config.jobs,
+                (cli.out / "results.json").string().c_str(),
+                cli.figures ? (", figures in " + (cli.out / "index.html").string()).c_str() : "");
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "grasp_transfer: " << e.what() << '\n';

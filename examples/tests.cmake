@@ -4,6 +4,21 @@ add_test(NAME "example: fingertips" COMMAND fingertips)
 add_test(NAME "example: custom_hand" COMMAND custom_hand)
 add_test(NAME "example: wrap" COMMAND wrap --out ${CMAKE_CURRENT_BINARY_DIR}/wrap-out)
 add_test(NAME "example: grasp_transfer (small run)"
-         COMMAND grasp_transfer --max-hypotheses 8 --jobs 2 --quiet
+         COMMAND grasp_transfer --max-hypotheses 8 --jobs 2 --quiet --figures
                  --out ${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_small)
 add_test(NAME "example: render_grasp" COMMAND render_grasp --out ${CMAKE_CURRENT_BINARY_DIR}/render-out)
+# Bad input: a clear message on stderr and a non-zero exit status.
+foreach(case IN ITEMS "unknown object|--objects,anvil|unknown object \"anvil\""
+                      "unknown method|--methods,teleport|unknown method \"teleport\""
+                      "bad shard|--shard,4/3|--shard: expected 1 <= K <= N"
+                      "bad jobs|--jobs,zero|--jobs: expected a number"
+                      "unwritable out|--out,/proc/grasp_transfer|--out: cannot write")
+  string(REPLACE "|" ";" parts "${case}")
+  list(GET parts 0 name)
+  list(GET parts 1 args)
+  list(GET parts 2 expect)
+  string(REPLACE "," ";" args "${args}")
+  add_test(NAME "example: grasp_transfer rejects ${name}"
+           COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:grasp_transfer>;${args}"
+                   "-DEXPECT=${expect}" -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
+endforeach()

@@ -15,7 +15,7 @@ TEST_CASE("built-in objects are valid and of realistic size", "[grasp][objects]"
     CHECK_NOTHROW(o->validate());
     CHECK(o->mass > 0.1);
     CHECK(o->mass < 1.0);
-    CHECK(o->boxes.size() == o->parts.size());
+    CHECK(o->boxes.size() >= o->parts.size());  // long parts are split
   }
   CHECK_FALSE(objects::find("anvil").has_value());
   // The hammer's centre of mass lies between the handle's middle and its head.
@@ -25,14 +25,19 @@ TEST_CASE("built-in objects are valid and of realistic size", "[grasp][objects]"
 }
 
 TEST_CASE("box hypotheses: four per reachable face, covered faces skipped", "[grasp][hypotheses]") {
-  SECTION("a lone box has 6 faces, 24 hypotheses") {
-    CHECK(box_hypotheses(objects::box()).size() == 24);
+  SECTION("a 0.27 m box splits into three boxes: 4 sides each plus top and bottom") {
+    CHECK(objects::box().boxes.size() == 3);
+    CHECK(box_hypotheses(objects::box()).size() == (3 * 4 + 2) * 4);
+  }
+  SECTION("a ball is one box with 6 faces, 24 hypotheses") {
+    CHECK(box_hypotheses(objects::ball()).size() == 24);
   }
   SECTION("the bottle's body top and neck bottom are covered") {
     const GraspObject bottle = objects::bottle();
     const auto hyps = box_hypotheses(bottle);
-    // body: 5 faces (its top is under the shoulder); shoulder: 4 sides; neck: 5 faces.
-    CHECK(hyps.size() == (5 + 4 + 5) * 4);
+    // body (0.17 m, two boxes): 8 sides and the bottom (its top is under the shoulder);
+    // shoulder: 4 sides; neck: 4 sides and the top.
+    CHECK(hyps.size() == (9 + 4 + 5) * 4);
     for (const GraspHypothesis& h : hyps) {
       CHECK(h.approach.norm() == Approx(1.0));
       CHECK(h.up.norm() == Approx(1.0));
@@ -48,6 +53,23 @@ TEST_CASE("box hypotheses: four per reachable face, covered faces skipped", "[gr
     }
     CHECK(ups.size() == 4);
   }
+}
+
+TEST_CASE("splitting a long box keeps its volume and extent", "[grasp][objects]") {
+  const GraspBox b{at(0.1, 0.2, 0.3).rpy(0.3, 0.2, 0.1), {0.02, 0.13, 0.03}};
+  std::vector<GraspBox> pieces;
+  objects::detail::split_box(b, 0.12, pieces);
+  REQUIRE(pieces.size() == 3);  // 0.26 m in pieces of at most 0.12 m
+  double volume = 0.0;
+  Vec3 centroid = Vec3::Zero();
+  for (const GraspBox& p : pieces) {
+    CHECK(p.half[1] == Approx(0.13 / 3));
+    CHECK(p.half[0] == 0.02);
+    volume += 8 * p.half[0] * p.half[1] * p.half[2];
+    centroid += p.pose.translation() / 3.0;
+  }
+  CHECK(volume == Approx(8 * 0.02 * 0.13 * 0.03));
+  CHECK((centroid - b.pose.translation()).norm() < 1e-12);
 }
 
 TEST_CASE("invalid objects are rejected with their name", "[grasp][bad-input]") {

@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <string>
+#include <vector>
 
 #include <topograsp/aico/solver.hpp>
 #include <topograsp/grasp/human_grasps.hpp>
@@ -29,7 +30,7 @@ struct TransferOptions {
   Vec<7> arm_ready = (Vec<7>() << 0.0, 0.5, 0.0, 1.0, 0.0, 0.5, 0.0).finished();
   /// The object is placed so that the human grasp centre lies this far beyond the SDH's grasp
   /// centre at the start, along the approach (m): the plan has to move in.
-  double backoff = 0.06;
+  double backoff = 0.03;
   AicoOptions aico = [] {
     AicoOptions o;
     o.steps = 40;
@@ -45,6 +46,9 @@ struct TransferOptions {
   double approach_precision_mid = 1e1;  ///< the SDH's approach axis along the human's
   double approach_precision_end = 1e3;
   double limit_precision = 1e3;  ///< joint limits, as a penalty
+  /// After the plan, the hand moves on along its approach until it touches the object, at most
+  /// this far (m), before the fingers close (as the demonstrations approach until contact).
+  double final_approach = 0.1;
   /// Least-squares iterations of the fingertip mapping.
   int fingertip_iterations = 100;
   /// Weight of the fingertip fit's pull toward the transplant pose and the pre-shape, per m^2 or
@@ -63,6 +67,10 @@ struct RobotGrasp {
   Vec2 winding = Vec2::Zero();  ///< w of the SDH's two curves around the centre of mass
   double plan_ms = 0.0;         ///< time of the method's own planning (ms)
   int sweeps = 0;               ///< AICO sweeps (topological only)
+  /// Topological only: the windings of the SDH's curves at each step of the plan and their
+  /// targets (the paper's Fig. 7), and AICO's sweeps.
+  std::vector<Vec2> winding_plan, winding_targets;
+  std::vector<AicoSweepRecord> sweep_log;
   ShakeResult shake;
   /// Where the object was after closing and squeezing (it starts at the identity): with
   /// hand_pose and q_closed, the grasp that the shake test started from.
@@ -129,14 +137,13 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
   r.shake = shake_test(scene, options.sim.shake);
 }
 
-/// The SDH's free-base configuration for palm pose \p root and hand joints \p q_hand, moved back
-/// along -\p approach until it clears the object by the contact gap (unchanged if it already
-/// does). Nothing if it cannot be cleared within a stand-off.
-[[nodiscard]] inline std::optional<Eigen::Isometry3d> clear_of_object(const GraspObject& object,
-                                                                      const Eigen::Isometry3d& root,
-                                                                      const Vec<7>& q_hand,
-                                                                      const Vec3& approach,
-                                                                      const GraspSimOptions& sim) {
+/// The SDH palm pose \p root (object frame, hand joints \p q_hand) moved along \p approach so
+/// that the hand is sim.contact_gap from the object: backed off first if it overlaps the object;
+/// if \p advance, also moved in (at most \p advance metres) if it is clear. Nothing if it cannot
+/// be placed (it stays inside the object over a stand-off of travel).
+[[nodiscard]] inline std::optional<Eigen::Isometry3d> place_at_contact(
+    const GraspObject& object, const Eigen::Isometry3d& root, const Vec<7>& q_hand,
+    const Vec3& approach, const GraspSimOptions& sim, double advance = 0.0) {
   constexpr auto& f = models::schunk_sdh_free;
   const int palm = f.link("palm");
   const Composite shape = object.composite();
@@ -149,16 +156,18 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
     return T;
   };
   // The palm_centre frame sits on the palm, unrotated, base_height above the root.
-  Vec<13> q = place_frame<f>(root * Eigen::Translation3d(0, 0, models::sdh_dims::base_height),
-                             f.frame("palm_centre"), q_hand);
+  const Vec<13> q = place_frame<f>(root * Eigen::Translation3d(0, 0, models::sdh_dims::base_height),
+                                   f.frame("palm_centre"), q_hand);
   forward_kinematics(d, q);
-  if (hand_object_distance(d, shape) >= sim.contact_gap) return root_of(q);
-  Vec<13> back = q;
-  back.head<3>() -= sim.standoff * approach.normalized();
-  const auto moved =
-      approach_until_contact<f>(back, approach, shape, sim.contact_gap, sim.standoff);
-  if (!moved) return std::nullopt;
-  return root_of(*moved);
+  const bool clear = hand_object_distance(d, shape) >= sim.contact_gap;
+  if (clear && advance <= 0.0) return root_of(q);
+  Vec<13> start = q;
+  if (!clear) start.head<3>() -= sim.standoff * approach.normalized();
+  const double travel = clear ? advance : sim.standoff;
+  const auto moved = approach_until_contact<f>(start, approach, shape, sim.contact_gap, travel);
+  if (moved) return root_of(*moved);
+  if (clear) return root_of(q);  // nothing within reach ahead: stay
+  return std::nullopt;
 }
 
 /// The paper's baseline: the SDH at the human hand's pose (its grasp centre at the human's, its
@@ -170,8 +179,8 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
   RobotGrasp r;
   r.method = "transplant";
   const Eigen::Isometry3d target = detail::sdh_grasp_target(g);
-  const auto root = clear_of_object(object, detail::sdh_root_for_grasp_centre(target),
-                                    options.sdh_preshape, target.linear().col(2), options.sim);
+  const auto root = place_at_contact(object, detail::sdh_root_for_grasp_centre(target),
+                                     options.sdh_preshape, target.linear().col(2), options.sim);
   r.plan_ms = detail::ms_since(t0);
   if (!root) {
     r.reason = "the hand cannot be placed clear of the object";
@@ -246,7 +255,7 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
   fitted.linear() = d.R[palm];
   fitted.translation() = d.p[palm];
   const Vec<7> q_hand = q.tail<7>();
-  const auto root = clear_of_object(object, fitted, q_hand, fitted.linear().col(2), options.sim);
+  const auto root = place_at_contact(object, fitted, q_hand, fitted.linear().col(2), options.sim);
   r.plan_ms = detail::ms_since(t0);
   if (!root) {
     r.reason = "the fitted hand cannot be placed clear of the object";
@@ -316,6 +325,13 @@ using TopologicalTaskSet =
   r.plan_ms = detail::ms_since(t0);
   r.sweeps = plan.sweeps;
   r.reason = std::string(to_string(plan.termination));
+  r.sweep_log = plan.sweep_log;
+  const auto& windings = problem.stack().template get<0>();
+  for (std::size_t t = 0; t < plan.q.size(); ++t) {
+    forward_kinematics(d, plan.q[t]);
+    r.winding_plan.push_back(windings.task.value(d));
+    r.winding_targets.push_back(windings.target.at(static_cast<int>(t), problem.steps()));
+  }
   const Vec<14> qT = plan.q.back();
   forward_kinematics(d, qT);
   const auto palm = static_cast<std::size_t>(M.link("palm"));
@@ -324,7 +340,8 @@ using TopologicalTaskSet =
   root_world.translation() = d.p[palm];
   const Eigen::Isometry3d root = T_world_object.inverse() * root_world;
   const Vec<7> q_hand = clamp_to_limits<models::schunk_sdh>(qT.tail<7>());
-  const auto cleared = clear_of_object(object, root, q_hand, root.linear().col(2), options.sim);
+  const auto cleared = place_at_contact(object, root, q_hand, root.linear().col(2), options.sim,
+                                        options.final_approach);
   if (!cleared) {
     r.reason = "the planned hand penetrates the object";
     return r;

@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include <catch2/catch.hpp>
+
+#include <topograsp/grasp/experiment.hpp>
+#include <topograsp/io/results.hpp>
+
+using namespace topograsp;
+
+namespace {
+
+ExperimentConfig small_config(int jobs) {
+  ExperimentConfig c;
+  c.objects = {objects::hammer(), objects::bottle()};
+  c.methods = {TransferMethod::topological, TransferMethod::transplant, TransferMethod::fingertip};
+  c.jobs = jobs;
+  c.seed = 7;
+  c.max_hypotheses = 8;
+  return c;
+}
+
+bool is_integer(const Json& j) {
+  return j.is_number() && j.as_number() == std::floor(j.as_number());
+}
+
+}  // namespace
+
+TEST_CASE("a small experiment: counts, schema and determinism", "[grasp][experiment]") {
+  const ExperimentConfig config = small_config(2);
+  const std::vector<ObjectResult> results = run_experiment(config);
+  REQUIRE(results.size() == 2);
+  for (const ObjectResult& r : results) {
+    INFO(r.object.name);
+    CHECK(r.hypotheses == 8);
+    CHECK(r.human.size() == 8);
+    int stable = 0;
+    for (const HumanGrasp& g : r.human) stable += g.stable() ? 1 : 0;
+    CHECK(r.stable_human() == stable);
+    REQUIRE(r.methods.size() == 3);
+    for (std::size_t m = 0; m < 3; ++m) {
+      CHECK(r.methods[m].tested == stable);
+      CHECK(r.methods[m].stable <= r.methods[m].tested);
+      CHECK(r.transfers[m].size() == static_cast<std::size_t>(stable));
+    }
+  }
+
+  SECTION("results.json follows the documented schema") {
+    const Json doc = Json::parse(results_json(config, results).dump(2));
+    REQUIRE(doc.at("config").is_object());
+    CHECK(doc.at("config").at("objects").as_array().size() == 2);
+    CHECK(doc.at("config").at("methods").as_array().size() == 3);
+    const auto& objects = doc.at("objects").as_array();
+    REQUIRE(objects.size() == 2);
+    std::size_t expected_grasps = 0;
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      const Json& o = objects[i];
+      CHECK(o.at("name").as_string() == results[i].object.name);
+      CHECK(is_integer(o.at("hypotheses")));
+      CHECK(o.at("stable_human").as_number() == results[i].stable_human());
+      for (const char* m : {"topological", "transplant", "fingertip"}) {
+        const Json& s = o.at("methods").at(m);
+        CHECK(is_integer(s.at("tested")));
+        CHECK(is_integer(s.at("stable")));
+        const double rate = s.at("rate").as_number();
+        CHECK(rate >= 0.0);
+        CHECK(rate <= 1.0);
+      }
+      for (const HumanGrasp& g : results[i].human) expected_grasps += g.reached ? 1 : 0;
+      expected_grasps += 3 * static_cast<std::size_t>(results[i].stable_human());
+    }
+    const auto& grasps = doc.at("grasps").as_array();
+    CHECK(grasps.size() == expected_grasps);
+    for (const Json& g : grasps) {
+      CHECK(g.at("object").is_string());
+      CHECK(is_integer(g.at("id")));
+      CHECK(g.at("method").is_string());
+      CHECK(g.at("stable").is_bool());
+      CHECK((g.at("scene").is_string() || g.at("scene").is_null()));
+      if (g.at("scene").is_string()) CHECK(g.at("scene").as_string().rfind("scenes/", 0) == 0);
+      CHECK(g.at("winding_human").is_array());
+      CHECK(g.at("winding_robot").is_array());
+      CHECK(g.at("plan_ms").is_number());
+      CHECK(is_integer(g.at("sweeps")));
+    }
+  }
+
+  SECTION("same seed, same results, whatever the number of threads") {
+    ExperimentConfig one = small_config(1);
+    const std::vector<ObjectResult> again = run_experiment(one);
+    one.jobs = 2;  // the config records jobs; compare everything else
+    Json a = results_json(one, again), b = results_json(config, results);
+    for (Json* doc : {&a, &b})
+      for (Json& g : const_cast<Json::Array&>(doc->at("grasps").as_array())) g.set("plan_ms", 0.0);
+    CHECK(a.dump(0) == b.dump(0));
+  }
+}
+
+TEST_CASE("each method on a hand-picked hammer grasp", "[grasp][transfer]") {
+  const GraspObject hammer = objects::hammer();
+  const auto hyps = box_hypotheses(hammer);
+  // A power grasp of the handle near the head: the palm under the handle, fingers across it.
+  const HumanGrasp g = demonstrate(hammer, hyps[20], 20);
+  REQUIRE(g.stable());
+  CHECK(g.descriptor.values[0] >= g.descriptor.values[1]);
+  CHECK(g.descriptor.values[0] > 0.5);  // the hand wraps the handle
+  const TransferOptions options;
+  const RobotGrasp topo = transfer_topological(hammer, g, options);
+  CHECK(topo.planned);
+  CHECK(topo.stable());
+  CHECK(topo.sweeps > 0);
+  REQUIRE(topo.winding_plan.size() == static_cast<std::size_t>(options.aico.steps + 1));
+  // The plan ends nearer the human's windings than it started.
+  const Vec2 y = g.descriptor.values;
+  CHECK((topo.winding_plan.back() - y).norm() < (topo.winding_plan.front() - y).norm());
+  const RobotGrasp transplant = transfer_transplant(hammer, g, options);
+  CHECK(transplant.planned);
+  CHECK(transplant.stable());
+  const RobotGrasp fingertip = transfer_fingertip(hammer, g, options);
+  CHECK(fingertip.planned);
+  CHECK(fingertip.shake.finite);
+}
+
+TEST_CASE("bad experiment input is rejected by name", "[grasp][bad-input]") {
+  CHECK_THROWS_WITH(transfer_method("teleport"), Catch::Contains("method"));
+  CHECK(transfer_method("fingertip") == TransferMethod::fingertip);
+  ExperimentConfig c = small_config(0);
+  CHECK_THROWS_WITH(run_experiment(c), Catch::Contains("jobs"));
+  c = small_config(1);
+  c.shard_index = 3;
+  c.shard_count = 3;
+  CHECK_THROWS_WITH(run_experiment(c), Catch::Contains("shard"));
+  c = small_config(1);
+  c.objects.clear();
+  CHECK_THROWS_WITH(run_experiment(c), Catch::Contains("objects"));
+  c = small_config(1);
+  c.objects[0].mass = -1.0;
+  CHECK_THROWS_WITH(run_experiment(c), Catch::Contains("hammer.mass"));
+}
+
+TEST_CASE("shards split the hypotheses without overlap", "[grasp][experiment]") {
+  ExperimentConfig c = small_config(1);
+  c.objects = {objects::can()};
+  c.methods = {TransferMethod::transplant};
+  int total = 0;
+  for (int k = 0; k < 3; ++k) {
+    c.shard_index = k;
+    c.shard_count = 3;
+    const auto r = run_experiment(c);
+    for (const HumanGrasp& g : r[0].human) CHECK(g.id % 3 == k);
+    total += r[0].hypotheses;
+  }
+  CHECK(total == 8);
+}
