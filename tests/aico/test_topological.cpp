@@ -54,9 +54,12 @@ TEST_CASE("the coupled topology layer reaches the same goal", "[aico][topology]"
   const test::WrapScene scene;
   TopologyOptions topo;
   topo.mode = TopologyMode::coupled;
-  topo.max_rounds = 6;
+  topo.max_rounds = 3;
+  AicoOptions o = wrap_options();
+  o.steps = 20;  // short, so that the suite stays fast under the sanitizers
+  o.max_sweeps = 60;
   const auto r = solve_topological<test::wrap_robot>(scene.base(), scene.windings(), scene.goal,
-                                                     scene.home, wrap_options(), topo);
+                                                     scene.home, o, topo);
   INFO(to_string(r.aico.termination) << ", " << r.rounds << " rounds");
   CHECK(r.aico.status != Status::numerical_issue);
   CHECK(r.rounds > 1);
