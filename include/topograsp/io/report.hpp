@@ -119,7 +119,7 @@ inline std::vector<std::string> write_report(const std::filesystem::path& dir,
             "figures/windings_" + r.object.name + "_" + std::to_string(id) + ".svg";
         winding_plot<2>(t.winding_plan, t.winding_targets,
                         "Windings of the SDH's curves over the plan (" + r.object.name + ")",
-                        "time step t", {"w(gamma_1)", "w(gamma_2)"})
+                        "time step t", {"gamma_1 (finger 1)", "gamma_2 (finger 2)"})
             .write((dir / fig7).string());
         const std::string cost =
             "figures/cost_" + r.object.name + "_" + std::to_string(id) + ".svg";
