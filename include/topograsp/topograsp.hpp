@@ -4,6 +4,12 @@
 /// (<topograsp/model.hpp>, <topograsp/kinematics.hpp>, ...) and can be used on its own.
 #pragma once
 
+#include <topograsp/aico.hpp>
 #include <topograsp/core.hpp>
+#include <topograsp/geometry.hpp>
+#include <topograsp/grasp.hpp>
+#include <topograsp/io.hpp>
 #include <topograsp/kinematics.hpp>
 #include <topograsp/model.hpp>
+#include <topograsp/physics.hpp>
+#include <topograsp/task.hpp>

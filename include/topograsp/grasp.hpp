@@ -1,0 +1,13 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// The grasp module: objects, box hypotheses, human demonstrations, the transfer methods and the
+/// experiment of the paper.
+#pragma once
+
+#include <topograsp/grasp/experiment.hpp>
+#include <topograsp/grasp/hand_axes.hpp>
+#include <topograsp/grasp/human_grasps.hpp>
+#include <topograsp/grasp/hypothesis.hpp>
+#include <topograsp/grasp/object.hpp>
+#include <topograsp/grasp/placement.hpp>
+#include <topograsp/grasp/transfer.hpp>
