@@ -4,9 +4,12 @@
 /// sphere, capsule, box and cylinder, up to 4 points a pair.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 #include <topograsp/model/spec.hpp>
 #include <topograsp/physics/detail/math.hpp>
