@@ -23,7 +23,8 @@ template <int N>
 ///   P   <- P - P (C + P)^-1 P   = (C^-1 + P^-1)^-1
 ///   eta <- eta - P (C + P)^-1 eta
 /// with C positive definite, added to a copy of P by \p add_C. Uses one Cholesky of C + P = L L'
-/// and Y = L^-1 P: P - Y'Y (a symmetric rank update), eta - Y' L^-1 eta. False if C + P is not positive definite.
+/// and Y = L^-1 P: P - Y'Y (a symmetric rank update), eta - Y' L^-1 eta. False if C + P is not
+/// positive definite.
 template <int N, class AddC>
 [[nodiscard]] bool woodbury_update(Mat<N, N>& P, Vec<N>& eta, Mat<N, N>& L, Mat<N, N>& Y, Vec<N>& z,
                                    const AddC& add_C) noexcept {
