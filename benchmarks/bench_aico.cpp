@@ -6,8 +6,8 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
-#include <ctime>
 #include <cstdio>
+#include <ctime>
 #include <topograsp/aico.hpp>
 #include <topograsp/model/models.hpp>
 
@@ -217,9 +217,9 @@ int main(int argc, char** argv) {
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   if (g_fixed_seconds > 0.0 && g_baseline_seconds > 0.0)
-    std::printf("message sweep (CPU time): %.3f ms fixed-size vs %.3f ms dynamic-size baseline (%.2fx)\n",
-                g_fixed_seconds * 1e3, g_baseline_seconds * 1e3,
-                g_baseline_seconds / g_fixed_seconds);
+    std::printf(
+        "message sweep (CPU time): %.3f ms fixed-size vs %.3f ms dynamic-size baseline (%.2fx)\n",
+        g_fixed_seconds * 1e3, g_baseline_seconds * 1e3, g_baseline_seconds / g_fixed_seconds);
   if (g_fixed_seconds > 0.0 && g_gemm_gflops > 0.0)
     std::printf(
         "message sweep: %.1f MFLOP at %.2f GFLOP/s = %.0f%% of the %.2f GFLOP/s GEMM rate\n",
