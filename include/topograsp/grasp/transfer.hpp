@@ -193,7 +193,9 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
 
 /// Fingertip mapping (Rohling and Hollerbach 1993): the SDH on a free base fitted by damped
 /// least squares, within its joint limits, so that its thumb tip, finger 1 tip and finger 2 tip
-/// lie on the human's thumb, index and middle fingertips; started from the transplant pose, then
+/// lie on the human's thumb, index and ring fingertips (the ring tip, not the middle, because
+/// its distance to the index is nearer the SDH's finger spacing); started from the transplant
+/// pose, with a weak pull toward it (options.fingertip_prior), then
 /// cleared of the object, closed until contact.
 [[nodiscard]] inline RobotGrasp transfer_fingertip(const GraspObject& object, const HumanGrasp& g,
                                                    const TransferOptions& options = {}) {
