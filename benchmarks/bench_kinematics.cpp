@@ -82,6 +82,12 @@ struct KdlHand {
     KDL::Chain chain;
     std::vector<int> q_index;  // configuration entry of each chain joint
     std::vector<double> mult, offset;
+    // The chain's joint values from the model's configuration x (mimic joints follow their source).
+    template <class X>
+    void joints_from(const X& x, KDL::JntArray& q) const {
+      for (std::size_t j = 0; j < q_index.size(); ++j)
+        q(static_cast<unsigned>(j)) = mult[j] * x[q_index[j]] + offset[j];
+    }
   };
   std::vector<FingerChain> fingers;
 
@@ -139,9 +145,7 @@ void kdl_fk_all_frames(benchmark::State& state) {
   for (auto _ : state) {
     const auto& x = qs[i++ % k_samples];
     for (std::size_t c = 0; c < hand.fingers.size(); ++c) {
-      const auto& f = hand.fingers[c];
-      for (std::size_t j = 0; j < f.q_index.size(); ++j)
-        q[c](static_cast<unsigned>(j)) = f.mult[j] * x[f.q_index[j]] + f.offset[j];
+      hand.fingers[c].joints_from(x, q[c]);
       fk[c].JntToCart(q[c], frames[c]);
       benchmark::DoNotOptimize(frames[c].data());
     }
@@ -168,9 +172,7 @@ void kdl_fk_tip_jacobians(benchmark::State& state) {
   for (auto _ : state) {
     const auto& x = qs[i++ % k_samples];
     for (std::size_t c = 0; c < hand.fingers.size(); ++c) {
-      const auto& f = hand.fingers[c];
-      for (std::size_t j = 0; j < f.q_index.size(); ++j)
-        q[c](static_cast<unsigned>(j)) = f.mult[j] * x[f.q_index[j]] + f.offset[j];
+      hand.fingers[c].joints_from(x, q[c]);
       fk[c].JntToCart(q[c], tip);
       jac[c].JntToJac(q[c], J[c]);
       benchmark::DoNotOptimize(tip.p.data);

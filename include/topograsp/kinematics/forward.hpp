@@ -17,47 +17,20 @@ constexpr bool is_zero_translation(const Pose& p) noexcept {
   return p.p[0] == 0.0 && p.p[1] == 0.0 && p.p[2] == 0.0;
 }
 
-#if defined(__GNUC__)
-#define TOPOGRASP_ALWAYS_INLINE [[gnu::always_inline]] inline
-#else
-#define TOPOGRASP_ALWAYS_INLINE inline
-#endif
-
-// out = R * v for a vector v known at compile time: zero entries cost nothing, ones no multiply.
-template <std::array<double, 3> V>
-TOPOGRASP_ALWAYS_INLINE void mul_const_vec(const Mat3& R, Vec3& out) noexcept {
-  out.setZero();
-  [&]<std::size_t... K>(std::index_sequence<K...>) {
-    ((V[K] == 0.0 ? void() : (V[K] == 1.0 ? void(out += R.col(K)) : void(out += V[K] * R.col(K)))),
-     ...);
-  }(std::make_index_sequence<3>{});
-}
-
-// out = R * C for a row-major 3x3 matrix C known at compile time, skipping its zeros.
-template <std::array<double, 9> C>
-TOPOGRASP_ALWAYS_INLINE void mul_const_mat(const Mat3& R, Mat3& out) noexcept {
-  [&]<std::size_t... J>(std::index_sequence<J...>) {
-    Vec3 column;
-    ((mul_const_vec<std::array<double, 3>{C[J], C[3 + J], C[6 + J]}>(R, column),
-      out.col(static_cast<Eigen::Index>(J)) = column),
-     ...);
-  }(std::make_index_sequence<3>{});
-}
-
-// The cross-product matrix K of a unit axis a and K^2, row-major: Rot(a, t) = I + sin t K +
-// (1 - cos t) K^2 (Rodrigues).
-constexpr std::array<double, 9> cross_matrix(const std::array<double, 3>& a) noexcept {
-  return {0.0, -a[2], a[1], a[2], 0.0, -a[0], -a[1], a[0], 0.0};
-}
-constexpr std::array<double, 9> cross_matrix_squared(const std::array<double, 3>& a) noexcept {
-  return {a[0] * a[0] - 1.0, a[0] * a[1],       a[0] * a[2],  //
-          a[0] * a[1],       a[1] * a[1] - 1.0, a[1] * a[2],  //
-          a[0] * a[2],       a[1] * a[2],       a[2] * a[2] - 1.0};
+// Rotation matrix of angle about the unit axis a (Rodrigues).
+inline Mat3 axis_rotation(const std::array<double, 3>& a, double angle) noexcept {
+  const auto [s, c] = sincos(angle);
+  const double t = 1.0 - c;
+  Mat3 r;
+  r << t * a[0] * a[0] + c, t * a[0] * a[1] - s * a[2], t * a[0] * a[2] + s * a[1],
+      t * a[0] * a[1] + s * a[2], t * a[1] * a[1] + c, t * a[1] * a[2] - s * a[0],
+      t * a[0] * a[2] - s * a[1], t * a[1] * a[2] + s * a[0], t * a[2] * a[2] + c;
+  return r;
 }
 
 // One link of forward kinematics; everything the model says about the link is a constant here.
 template <const auto& M, std::size_t I, class D>
-TOPOGRASP_ALWAYS_INLINE void fk_link(KinematicsData<M>& d, const D& q) noexcept {
+inline void fk_link(KinematicsData<M>& d, const D& q) noexcept {
   constexpr Link link = M.links[I];
   constexpr Pose origin = link.spec.origin;
   // Joint frame: parent * origin.
@@ -71,13 +44,11 @@ TOPOGRASP_ALWAYS_INLINE void fk_link(KinematicsData<M>& d, const D& q) noexcept 
     if constexpr (is_identity_rotation(origin))
       Rj = d.R[P];
     else
-      mul_const_mat<origin.R>(d.R[P], Rj);
-    if constexpr (is_zero_translation(origin)) {
+      Rj.noalias() = d.R[P] * Pose(origin).rotation();
+    if constexpr (is_zero_translation(origin))
       pj = d.p[P];
-    } else {
-      mul_const_vec<origin.p>(d.R[P], pj);
-      pj += d.p[P];
-    }
+    else
+      pj.noalias() = d.p[P] + d.R[P] * Pose(origin).translation();
   }
   if constexpr (link.spec.type == JointType::fixed) {
     d.R[I] = Rj;
@@ -91,7 +62,7 @@ TOPOGRASP_ALWAYS_INLINE void fk_link(KinematicsData<M>& d, const D& q) noexcept 
     if constexpr (link.axis_kind != AxisKind::general)
       d.axis[I] = link.axis[static_cast<std::size_t>(k)] * Rj.col(k);
     else
-      mul_const_vec<link.axis>(Rj, d.axis[I]);
+      d.axis[I].noalias() = Rj * Eigen::Map<const Vec3>(link.axis.data());
     if constexpr (link.spec.type == JointType::prismatic) {
       d.R[I] = Rj;
       d.p[I] = pj + value * d.axis[I];
@@ -100,40 +71,32 @@ TOPOGRASP_ALWAYS_INLINE void fk_link(KinematicsData<M>& d, const D& q) noexcept 
       if constexpr (link.axis_kind != AxisKind::general) {
         // Rotation about a coordinate axis: mix the two other columns.
         constexpr int a = (k + 1) % 3, b = (k + 2) % 3;
-        const auto [s, c] = sincos(link.axis[static_cast<std::size_t>(k)] * value);
+        const double angle = link.axis[static_cast<std::size_t>(k)] * value;
+        const auto [s, c] = sincos(angle);
         d.R[I].col(k) = Rj.col(k);
         d.R[I].col(a) = c * Rj.col(a) + s * Rj.col(b);
         d.R[I].col(b) = c * Rj.col(b) - s * Rj.col(a);
       } else {
-        // Rj * Rot(a, value) = Rj + sin * (Rj K) + (1 - cos) * (Rj K^2).
-        const auto [s, c] = sincos(value);
-        Mat3 RK, RK2;
-        mul_const_mat<cross_matrix(link.axis)>(Rj, RK);
-        mul_const_mat<cross_matrix_squared(link.axis)>(Rj, RK2);
-        d.R[I] = Rj + s * RK + (1.0 - c) * RK2;
+        d.R[I].noalias() = Rj * axis_rotation(link.axis, value);
       }
     }
   }
 }
 
 template <const auto& M, std::size_t I>
-TOPOGRASP_ALWAYS_INLINE void fk_frame(KinematicsData<M>& d) noexcept {
+inline void fk_frame(KinematicsData<M>& d) noexcept {
   constexpr Frame f = M.frames[I];
   constexpr auto L = static_cast<std::size_t>(f.link);
   constexpr Pose offset = f.spec.offset;
   if constexpr (is_identity_rotation(offset))
     d.frame_R[I] = d.R[L];
   else
-    mul_const_mat<offset.R>(d.R[L], d.frame_R[I]);
-  if constexpr (is_zero_translation(offset)) {
+    d.frame_R[I].noalias() = d.R[L] * Pose(offset).rotation();
+  if constexpr (is_zero_translation(offset))
     d.frame_p[I] = d.p[L];
-  } else {
-    mul_const_vec<offset.p>(d.R[L], d.frame_p[I]);
-    d.frame_p[I] += d.p[L];
-  }
+  else
+    d.frame_p[I].noalias() = d.p[L] + d.R[L] * Pose(offset).translation();
 }
-
-#undef TOPOGRASP_ALWAYS_INLINE
 
 }  // namespace detail
 
