@@ -33,6 +33,8 @@ options:
   --seed S         seed of the shake tests (default 1); same seed, same results
   --shard K/N      run only hypotheses with id % N == K - 1 (1 <= K <= N), for job arrays
   --max-hypotheses M  only the first M hypotheses of each object (default all)
+  --set NAME=VALUE  set a transfer parameter (repeatable; the names and defaults are listed
+                   below, their meaning in docs/transfer.md), e.g. --set final_approach=0.1
   --figures        also write DIR/figures/*.svg and DIR/index.html (Fig. 5-7, Table I)
   --quiet          no progress on stderr
   --help           this text
@@ -75,6 +77,10 @@ Cli parse(int argc, char** argv) {
     };
     if (arg == "--help" || arg == "-h") {
       std::fputs(k_usage, stdout);
+      std::printf("\ntransfer parameters (default):\n");
+      const TransferOptions defaults;
+      for (const auto& [name, field] : transfer_parameters)
+        std::printf("  %-24s %g\n", std::string(name).c_str(), defaults.*field);
       std::exit(0);
     } else if (arg == "--objects") {
       objects = split(value());
@@ -100,6 +106,13 @@ Cli parse(int argc, char** argv) {
         throw std::invalid_argument("--shard: expected 1 <= K <= N, got \"" + s + "\"");
       cli.config.shard_index = k - 1;
       cli.config.shard_count = n;
+    } else if (arg == "--set") {
+      const std::string s = value();
+      const auto eq = s.find('=');
+      if (eq == std::string::npos)
+        throw std::invalid_argument("--set: expected NAME=VALUE, got \"" + s + "\"");
+      set_transfer_parameter(cli.config.transfer, s.substr(0, eq),
+                             parse_number<double>(s.substr(eq + 1), "--set"));
     } else if (arg == "--figures") {
       cli.figures = true;
     } else if (arg == "--quiet") {

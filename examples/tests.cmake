@@ -12,7 +12,10 @@ foreach(case IN ITEMS "unknown object|--objects,anvil|unknown object \"anvil\""
                       "unknown method|--methods,teleport|unknown method \"teleport\""
                       "bad shard|--shard,4/3|--shard: expected 1 <= K <= N"
                       "bad jobs|--jobs,zero|--jobs: expected a number"
-                      "unwritable out|--out,/proc/grasp_transfer|--out: cannot write")
+                      "unwritable out|--out,/proc/grasp_transfer|--out: cannot write"
+                      "unknown parameter|--set,reach=1|unknown transfer parameter \"reach\""
+                      "negative parameter|--set,final_approach=-1|value: final_approach must be"
+                      "parameter without value|--set,final_approach|--set: expected NAME=VALUE")
   string(REPLACE "|" ";" parts "${case}")
   list(GET parts 0 name)
   list(GET parts 1 args)

@@ -10,6 +10,7 @@
 #include <topograsp/task/concepts.hpp>
 #include <topograsp/task/hand_curve.hpp>
 #include <topograsp/task/joint_limit_task.hpp>
+#include <topograsp/task/line_task.hpp>
 #include <topograsp/task/linking.hpp>
 #include <topograsp/task/orientation_task.hpp>
 #include <topograsp/task/position_task.hpp>

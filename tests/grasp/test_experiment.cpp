@@ -111,6 +111,11 @@ TEST_CASE("each method on a hand-picked hammer grasp", "[grasp][transfer]") {
   // The plan ends nearer the human's windings than it started.
   const Vec2 y = g.descriptor.values;
   CHECK((topo.winding_plan.back() - y).norm() < (topo.winding_plan.front() - y).norm());
+  // The SDH's grasp centre ends on the human's approach line (the line task), within 1 cm.
+  const Eigen::Isometry3d human = detail::sdh_grasp_target(g);
+  const Vec3 centre = topo.hand_pose * Vec3(0, 0, 0.15);  // the SDH's grasp_centre frame
+  const Vec3 off = centre - human.translation();
+  CHECK((off - off.dot(human.linear().col(2)) * human.linear().col(2)).norm() < 0.01);
   const RobotGrasp transplant = transfer_transplant(hammer, g, options);
   CHECK(transplant.planned);
   CHECK(transplant.stable());
@@ -134,6 +139,27 @@ TEST_CASE("bad experiment input is rejected by name", "[grasp][bad-input]") {
   c = small_config(1);
   c.objects[0].mass = -1.0;
   CHECK_THROWS_WITH(run_experiment(c), Catch::Contains("hammer.mass"));
+}
+
+TEST_CASE("transfer parameters are set and recorded by name", "[grasp][bad-input]") {
+  TransferOptions o;
+  set_transfer_parameter(o, "final_approach", 0.1);
+  CHECK(o.final_approach == 0.1);
+  set_transfer_parameter(o, "line_precision_end", 0.0);
+  CHECK(o.line_precision_end == 0.0);
+  CHECK_THROWS_WITH(set_transfer_parameter(o, "reach", 1.0),
+                    Catch::StartsWith("name") && Catch::Contains("final_approach"));
+  CHECK_THROWS_WITH(set_transfer_parameter(o, "backoff", -0.1), Catch::StartsWith("value"));
+  CHECK_THROWS_WITH(set_transfer_parameter(o, "backoff", std::nan("")), Catch::StartsWith("value"));
+  CHECK(o.backoff == TransferOptions{}.backoff);  // unchanged by the rejected calls
+  // results.json records every parameter under config.transfer.
+  ExperimentConfig c = small_config(1);
+  c.transfer = o;
+  const Json doc = results_json(c, {});
+  const Json& t = doc.at("config").at("transfer");
+  for (const auto& [name, field] : transfer_parameters)
+    CHECK(t.at(std::string(name)).as_number() == o.*field);
+  CHECK(t.at("final_approach").as_number() == 0.1);
 }
 
 TEST_CASE("shards split the hypotheses without overlap", "[grasp][experiment]") {

@@ -5,6 +5,7 @@
 
 #include <topograsp/task/axis_task.hpp>
 #include <topograsp/task/joint_limit_task.hpp>
+#include <topograsp/task/line_task.hpp>
 #include <topograsp/task/orientation_task.hpp>
 #include <topograsp/task/position_task.hpp>
 #include <topograsp/task/posture_task.hpp>
@@ -28,6 +29,8 @@ void check_pose_jacobians(std::uint32_t seed) {
       CHECK(test::jacobian_error(PositionTask<M>(f, offset), q) < 1e-7);
       CHECK(test::jacobian_error(AxisTask<M>(f, Vec3(g(rng), g(rng), g(rng))), q) < 1e-7);
       CHECK(test::jacobian_error(OrientationTask<M>(f), q) < 1e-7);
+      const Vec3 c(g(rng), g(rng), g(rng)), a(g(rng), g(rng), g(rng));
+      CHECK(test::jacobian_error(LineTask<M>(f, c, a, offset), q) < 1e-7);
     }
     Vec<M.nq> w;
     for (int i = 0; i < M.nq; ++i) w[i] = std::abs(g(rng));
@@ -115,6 +118,30 @@ TEST_CASE("pose tasks report what they measure", "[task][pose]") {
   CHECK((posture.value(d) - posture.target(qc)).norm() == Approx((d.q - qc).norm()));
 }
 
+TEST_CASE("the line task is the offset of a point from a line", "[task][pose]") {
+  constexpr auto& M = models::schunk_arm_sdh;
+  KinematicsData<M> d;
+  std::mt19937 rng(5);
+  forward_kinematics(d, test::random_configuration<M>(rng));
+  const auto f = static_cast<std::size_t>(M.frame("grasp_centre"));
+  const Vec3 x = d.frame_p[f];
+  const Vec3 a = Vec3(1, -2, 0.5).normalized();
+  // On the line, wherever along it: zero.
+  for (const double s : {-0.3, 0.0, 0.7})
+    CHECK(LineTask<M>("grasp_centre", x + s * a, 3.0 * a).value(d).norm() < 1e-15);
+  // Off it: the distance, whatever the point on the line and the length of the direction.
+  const Vec3 across = a.unitOrthogonal().cross(a).normalized();
+  const LineTask<M> line("grasp_centre", x - 0.05 * across + 0.2 * a, 0.1 * a);
+  CHECK(line.value(d).norm() == Approx(0.05));
+  // The basis is orthonormal and orthogonal to the direction.
+  CHECK((line.basis() * line.basis().transpose() - Mat<2, 2>::Identity()).norm() < 1e-15);
+  CHECK((line.basis() * a).norm() < 1e-15);
+  // The offset point of the frame.
+  const Vec3 o(0.0, 0.0, 0.02);
+  const Vec3 xo = x + d.frame_R[f] * o;
+  CHECK(LineTask<M>("grasp_centre", xo, a, o).value(d).norm() < 1e-15);
+}
+
 TEST_CASE("pose tasks reject bad input naming the argument", "[task][pose]") {
   constexpr auto& M = models::schunk_sdh;
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -124,6 +151,12 @@ TEST_CASE("pose tasks reject bad input naming the argument", "[task][pose]") {
   CHECK_THROWS_WITH(AxisTask<M>("tip_1", Vec3::Zero()), Catch::StartsWith("axis"));
   CHECK_THROWS_WITH(AxisTask<M>(-1, Vec3::UnitZ()), Catch::StartsWith("frame"));
   CHECK_THROWS_WITH(OrientationTask<M>("x"), Catch::StartsWith("frame"));
+  const Vec3 z = Vec3::UnitZ(), o = Vec3::Zero();
+  CHECK_THROWS_WITH(LineTask<M>("x", o, z), Catch::StartsWith("frame"));
+  CHECK_THROWS_WITH(LineTask<M>("tip_1", Vec3(nan, 0, 0), z), Catch::StartsWith("point"));
+  CHECK_THROWS_WITH(LineTask<M>("tip_1", o, o), Catch::StartsWith("direction"));
+  CHECK_THROWS_WITH(LineTask<M>("tip_1", o, Vec3(0, nan, 1)), Catch::StartsWith("direction"));
+  CHECK_THROWS_WITH(LineTask<M>("tip_1", o, z, Vec3(0, 0, nan)), Catch::StartsWith("offset"));
   CHECK_THROWS_WITH(JointLimitTask<M>(-0.1), Catch::StartsWith("margin"));
   CHECK_THROWS_WITH(JointLimitTask<M>(10.0), Catch::StartsWith("margin"));
   Vec<7> w = Vec<7>::Ones();

@@ -8,8 +8,12 @@
 /// judged by the shake test, the hand without the arm.
 #pragma once
 
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include <topograsp/aico/solver.hpp>
@@ -17,6 +21,7 @@
 #include <topograsp/task/axis_task.hpp>
 #include <topograsp/task/collision_task.hpp>
 #include <topograsp/task/joint_limit_task.hpp>
+#include <topograsp/task/line_task.hpp>
 #include <topograsp/task/task_set.hpp>
 
 namespace topograsp {
@@ -40,21 +45,63 @@ struct TransferOptions {
     return o;
   }();
   double winding_precision_mid = 1e1;  ///< precision of the winding targets on the way
-  double winding_precision_end = 1e4;  ///< and at the end
+  double winding_precision_end = 1e3;  ///< and at the end
   double collision_margin = 0.015;     ///< m
   double collision_precision = 1e3;
   double approach_precision_mid = 1e1;  ///< the SDH's approach axis along the human's
   double approach_precision_end = 1e3;
+  /// The SDH's grasp centre on the human's approach line (the line through the human grasp
+  /// centre along the approach), per m^2: where on the object to grasp; where along the line is
+  /// left to the windings, the collision task and the final approach. 0 switches it off.
+  double line_precision_mid = 1e2;
+  double line_precision_end = 1e4;
   double limit_precision = 1e3;  ///< joint limits, as a penalty
   /// After the plan, the hand moves on along its approach until it touches the object, at most
-  /// this far (m), before the fingers close (as the demonstrations approach until contact).
-  double final_approach = 0.1;
+  /// this far (m), before the fingers close, as the demonstrations approach until contact.
+  double final_approach = 0.25;
   /// Least-squares iterations of the fingertip mapping.
   int fingertip_iterations = 100;
   /// Weight of the fingertip fit's pull toward the transplant pose and the pre-shape, per m^2 or
   /// rad^2, against the tip errors in m^2.
   double fingertip_prior = 1e-2;
 };
+
+/// The numeric parameters of TransferOptions that a command line or a result file names, each a
+/// double >= 0 (grasp_transfer --set NAME=VALUE; the "transfer" object of results.json).
+inline constexpr std::array<std::pair<std::string_view, double TransferOptions::*>, 12>
+    transfer_parameters{{
+        {"backoff", &TransferOptions::backoff},
+        {"winding_precision_mid", &TransferOptions::winding_precision_mid},
+        {"winding_precision_end", &TransferOptions::winding_precision_end},
+        {"collision_margin", &TransferOptions::collision_margin},
+        {"collision_precision", &TransferOptions::collision_precision},
+        {"approach_precision_mid", &TransferOptions::approach_precision_mid},
+        {"approach_precision_end", &TransferOptions::approach_precision_end},
+        {"line_precision_mid", &TransferOptions::line_precision_mid},
+        {"line_precision_end", &TransferOptions::line_precision_end},
+        {"limit_precision", &TransferOptions::limit_precision},
+        {"final_approach", &TransferOptions::final_approach},
+        {"fingertip_prior", &TransferOptions::fingertip_prior},
+    }};
+
+/// Sets the parameter called \p name (one of transfer_parameters) of \p options to \p value.
+/// \throws topograsp::invalid_argument naming "name" (unknown; the message lists the names) or
+/// "value" (negative or not finite); \p options is unchanged then.
+inline void set_transfer_parameter(TransferOptions& options, std::string_view name, double value) {
+  for (const auto& [known, field] : transfer_parameters) {
+    if (known != name) continue;
+    if (!std::isfinite(value) || value < 0.0)
+      detail::throw_invalid_argument(
+          "value", std::string(name) + " must be finite and >= 0, got " + std::to_string(value));
+    options.*field = value;
+    return;
+  }
+  std::string names;
+  for (const auto& p : transfer_parameters)
+    names += (names.empty() ? "" : ", ") + std::string(p.first);
+  detail::throw_invalid_argument("name", "unknown transfer parameter \"" + std::string(name) +
+                                             "\" (expected one of " + names + ")");
+}
 
 /// A transferred grasp: where the SDH ended (object frame), how it was planned, the shake test.
 struct RobotGrasp {
@@ -270,17 +317,20 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
 
 /// The transfer task set of the topological method for the arm + SDH: the windings of the SDH's
 /// two curves around the object's centre of mass (interpolated from the start to the human's
-/// values), the collision potential against the object, the approach axis, the joint limits.
+/// values), the collision potential against the object, the approach axis, the joint limits, and
+/// the grasp centre on the human's approach line.
 using TopologicalTaskSet =
     TaskSet<WindingTask<models::schunk_arm_sdh, 2>, CollisionTask<models::schunk_arm_sdh>,
-            AxisTask<models::schunk_arm_sdh>, JointLimitTask<models::schunk_arm_sdh>>;
+            AxisTask<models::schunk_arm_sdh>, JointLimitTask<models::schunk_arm_sdh>,
+            LineTask<models::schunk_arm_sdh>>;
 
 /// Builds the topological task set for an object at \p T_world_object whose human descriptor is
-/// \p y, with the SDH's approach to be along \p approach (world); \p d holds the kinematics of the
-/// start configuration (the winding targets start from its values).
+/// \p y, with the SDH's approach to be along \p approach (world) on the line through
+/// \p grasp_point (world: the human's grasp centre); \p d holds the kinematics of the start
+/// configuration (the winding targets start from its values).
 [[nodiscard]] inline TopologicalTaskSet topological_tasks(
     const GraspObject& object, const Eigen::Isometry3d& T_world_object, const Vec2& y,
-    const Vec3& approach, const KinematicsData<models::schunk_arm_sdh>& d,
+    const Vec3& grasp_point, const Vec3& approach, const KinematicsData<models::schunk_arm_sdh>& d,
     const TransferOptions& options) {
   constexpr auto& M = models::schunk_arm_sdh;
   WindingTask<M, 2> winding({0, 1}, T_world_object * object.centre_of_mass());
@@ -295,15 +345,20 @@ using TopologicalTaskSet =
                 constant_target<3>(approach.normalized()),
                 precision(options.approach_precision_mid, options.approach_precision_end)),
       scheduled(JointLimitTask<M>(), constant_target<M.nq>(Vec<M.nq>::Zero()),
-                constant_precision(options.limit_precision)));
+                constant_precision(options.limit_precision)),
+      scheduled(LineTask<M>(M.frame("grasp_centre"), grasp_point, approach),
+                constant_target<2>(Vec2::Zero()),
+                precision(options.line_precision_mid, options.line_precision_end)));
   return set;
 }
 
 /// Topological synergies (the paper): the human's descriptor y (its two largest windings around
 /// the object's centre of mass) becomes the winding target of the SDH's two curves; AICO plans the
-/// 14-DOF arm + SDH from its ready pose with the collision task and the approach direction; the
-/// object is placed (turned) so that the human's approach is the SDH's at the ready pose, a
-/// little out of reach. The final hand, without the arm, is closed until contact and shaken.
+/// 14-DOF arm + SDH from its ready pose with the collision task, the approach direction and (our
+/// addition, docs/transfer.md) the grasp centre on the human's approach line; the object is placed
+/// (turned) so that the human's approach is the SDH's at the ready pose, a little out of reach.
+/// The final hand, without the arm, moves on along its approach until contact, is closed until
+/// contact and shaken.
 [[nodiscard]] inline RobotGrasp transfer_topological(const GraspObject& object, const HumanGrasp& g,
                                                      const TransferOptions& options = {}) {
   const auto t0 = detail::Clock::now();
@@ -317,11 +372,14 @@ using TopologicalTaskSet =
   const Eigen::Isometry3d gc = frame_pose(d, M.frame("grasp_centre"));
   const Vec3 approach = gc.linear().col(2);
   // The object such that the human grasp centre maps onto the SDH's, pushed out by the backoff.
-  const Eigen::Isometry3d T_world_object =
-      Eigen::Translation3d(options.backoff * approach) * gc * detail::sdh_grasp_target(g).inverse();
+  const Eigen::Isometry3d human_centre =
+      Eigen::Translation3d(options.backoff * approach) * gc;  // world
+  const Eigen::Isometry3d T_world_object = human_centre * detail::sdh_grasp_target(g).inverse();
   const Vec2 y = g.descriptor.values;
   AicoProblem<M, TopologicalTaskSet> problem(
-      topological_tasks(object, T_world_object, y, approach, d, options), q0, options.aico);
+      topological_tasks(object, T_world_object, y, human_centre.translation(), approach, d,
+                        options),
+      q0, options.aico);
   AicoWorkspace ws(problem);
   const AicoResult<M.nq> plan = solve(problem, ws);
   r.plan_ms = detail::ms_since(t0);

@@ -66,6 +66,10 @@ inline Json json_vector(const auto& v) {
   cfg.set("squeeze", config.transfer.sim.close.squeeze);
   cfg.set("shake_steps", config.transfer.sim.shake.shake_steps);
   cfg.set("aico_steps", config.transfer.aico.steps);
+  Json transfer = Json::object();
+  for (const auto& [name, field] : transfer_parameters)
+    transfer.set(std::string(name), config.transfer.*field);
+  cfg.set("transfer", transfer);
   Json out_objects = Json::array();
   Json grasps = Json::array();
   for (const ObjectResult& r : results) {
