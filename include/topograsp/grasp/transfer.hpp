@@ -62,13 +62,16 @@ struct TransferOptions {
   /// Least-squares iterations of the fingertip mapping.
   int fingertip_iterations = 100;
   /// Weight of the fingertip fit's pull toward the transplant pose and the pre-shape, per m^2 or
-  /// rad^2, against the tip errors in m^2.
-  double fingertip_prior = 1e-2;
+  /// rad^2, against the tip errors in m^2 (1e-4: 1 rad weighs as 1 cm, so the tips are reached).
+  double fingertip_prior = 1e-4;
+  /// Scale of the human's three tip positions about their centroid before the fit (the robot's
+  /// size over the human's); 0 = the SDH/human ratio of the mapped digits' lengths (about 2.17).
+  double fingertip_scale = 0.0;
 };
 
 /// The numeric parameters of TransferOptions that a command line or a result file names, each a
 /// double >= 0 (grasp_transfer --set NAME=VALUE; the "transfer" object of results.json).
-inline constexpr std::array<std::pair<std::string_view, double TransferOptions::*>, 12>
+inline constexpr std::array<std::pair<std::string_view, double TransferOptions::*>, 13>
     transfer_parameters{{
         {"backoff", &TransferOptions::backoff},
         {"winding_precision_mid", &TransferOptions::winding_precision_mid},
@@ -82,6 +85,7 @@ inline constexpr std::array<std::pair<std::string_view, double TransferOptions::
         {"limit_precision", &TransferOptions::limit_precision},
         {"final_approach", &TransferOptions::final_approach},
         {"fingertip_prior", &TransferOptions::fingertip_prior},
+        {"fingertip_scale", &TransferOptions::fingertip_scale},
     }};
 
 /// Sets the parameter called \p name (one of transfer_parameters) of \p options to \p value.
@@ -153,6 +157,38 @@ inline Eigen::Isometry3d sdh_root_for_grasp_centre(const Eigen::Isometry3d& T) {
   KinematicsData<s> d;
   forward_kinematics(d, Vec<7>::Zero());
   return T * frame_pose(d, s.frame("grasp_centre")).inverse();
+}
+
+// The length (m) of a digit of M held straight (q = 0): the distances between the link origins
+// from link `first` out to frame `tip`.
+template <const auto& M>
+double digit_length(int first, int tip) {
+  KinematicsData<M> d;
+  forward_kinematics(d, Vec<M.nq>::Zero());
+  Vec3 p = d.frame_p[static_cast<std::size_t>(tip)];
+  int l = M.frames[static_cast<std::size_t>(tip)].link;
+  double length = 0.0;
+  for (;;) {
+    length += (p - d.p[static_cast<std::size_t>(l)]).norm();
+    if (l == first || l <= 0) break;
+    p = d.p[static_cast<std::size_t>(l)];
+    l = M.links[static_cast<std::size_t>(l)].parent;
+  }
+  return length;
+}
+
+// The SDH's size over the human hand's: the summed lengths of the mapped digits (SDH thumb,
+// finger 1, finger 2 against the human thumb, index, ring), 0.5145 / 0.2366 = 2.175.
+inline double sdh_human_scale() {
+  constexpr auto& s = models::schunk_sdh;
+  constexpr auto& h = models::human_hand;
+  const double robot = digit_length<s>(s.link("thumb_1"), s.frame("thumb_tip")) +
+                       digit_length<s>(s.link("knuckle"), s.frame("tip_1")) +
+                       digit_length<s>(s.link("knuckle_2"), s.frame("tip_2"));
+  const double human = digit_length<h>(h.link("thumb_cmc1"), h.frame("thumb_tip")) +
+                       digit_length<h>(h.link("index_abd"), h.frame("index_tip")) +
+                       digit_length<h>(h.link("ring_abd"), h.frame("ring_tip"));
+  return robot / human;
 }
 
 // The SDH windings of its two curves around the object's centre of mass.
@@ -238,12 +274,12 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
   return r;
 }
 
-/// Fingertip mapping (Rohling and Hollerbach 1993): the SDH on a free base fitted by damped
-/// least squares, within its joint limits, so that its thumb tip, finger 1 tip and finger 2 tip
-/// lie on the human's thumb, index and ring fingertips (the ring tip, not the middle, because
-/// its distance to the index is nearer the SDH's finger spacing); started from the transplant
-/// pose, with a weak pull toward it (options.fingertip_prior), then
-/// cleared of the object, closed until contact.
+/// Fingertip mapping (Rohling and Hollerbach 1993): the human's thumb, index and ring fingertips
+/// (the ring, not the middle, because its distance to the index is nearer the SDH's finger
+/// spacing) scaled about their centroid to the SDH's size (options.fingertip_scale); the SDH on a
+/// free base fitted by damped least squares, within its joint limits, so that its thumb tip,
+/// finger 1 tip and finger 2 tip lie on them, started from the transplant pose with a weak pull
+/// toward it (options.fingertip_prior); then cleared of the object and closed until contact.
 [[nodiscard]] inline RobotGrasp transfer_fingertip(const GraspObject& object, const HumanGrasp& g,
                                                    const TransferOptions& options = {}) {
   const auto t0 = detail::Clock::now();
@@ -253,9 +289,15 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
   constexpr auto& h = models::human_hand;
   KinematicsData<h> hd;
   forward_kinematics(hd, g.q);
-  const std::array<Vec3, 3> goal{g.hand_pose * hd.frame_p[h.frame("thumb_tip")],
-                                 g.hand_pose * hd.frame_p[h.frame("index_tip")],
-                                 g.hand_pose * hd.frame_p[h.frame("ring_tip")]};
+  std::array<Vec3, 3> goal{g.hand_pose * hd.frame_p[h.frame("thumb_tip")],
+                           g.hand_pose * hd.frame_p[h.frame("index_tip")],
+                           g.hand_pose * hd.frame_p[h.frame("ring_tip")]};
+  // Scaled fingertip mapping: the human tips scaled about their centroid to the SDH's size (its
+  // digits are about twice as long, and the human tips lie on, even inside, the object).
+  const double scale =
+      options.fingertip_scale > 0.0 ? options.fingertip_scale : detail::sdh_human_scale();
+  const Vec3 centroid = (goal[0] + goal[1] + goal[2]) / 3.0;
+  for (Vec3& p : goal) p = centroid + scale * (p - centroid);
   const std::array<int, 3> tips{f.frame("thumb_tip"), f.frame("tip_1"), f.frame("tip_2")};
   const Eigen::Isometry3d target = detail::sdh_grasp_target(g);
   Vec<13> q = place_frame<f>(target, f.frame("grasp_centre"), options.sdh_preshape);
