@@ -16,6 +16,7 @@
 
 #include <topograsp/geometry/signed_distance.hpp>
 #include <topograsp/grasp/hand_axes.hpp>
+#include <topograsp/grasp/human_grasps.hpp>
 #include <topograsp/grasp/object.hpp>
 #include <topograsp/grasp/placement.hpp>
 #include <topograsp/io/html_page.hpp>
@@ -170,9 +171,7 @@ int main(int argc, char** argv) {
     // with the fingers along -y, so that the handle lies across the palm, thumb toward the head;
     // the SDH with its thumb and fingers on either side of the handle.
     constexpr auto& human = models::human_hand;
-    Vec<20> pre = Vec<20>::Zero();
-    pre[human.joint("thumb_cmc1")] = 0.3;
-    pre[human.joint("thumb_cmc2")] = 0.43;
+    const Vec<20> pre = human_preshape();  // the demonstrations' pre-shape, thumb opposed
     const auto h = grasp<human, models::human_hand_free>(
         hammer, human_hand_axes, Vec3(-0.05, 0.0, 0.0), Vec3(0, 0, -1), Vec3(0, -1, 0), pre);
     constexpr auto& sdh = models::schunk_sdh;

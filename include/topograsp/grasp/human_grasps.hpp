@@ -37,9 +37,12 @@ struct GraspSimOptions {
   double standoff = 0.12;      ///< where the approach starts, back from the face (m)
 };
 
-/// The open pre-shape of the human hand the demonstrations start from: fingers slightly bent,
-/// the thumb open in the plane of the palm, so that the palm meets the object first and the
-/// closing thumb (CMC2 toward palmar abduction, then MCP and IP) opposes the fingers.
+/// The open pre-shape of the human hand the demonstrations start from, a power-grasp pre-shape:
+/// fingers slightly bent, the thumb opposed (CMC2 at its palmar-abduction limit, -50 degrees), so
+/// that it stands about 8 cm out of the palm and its MCP and IP flexion curl it toward the finger
+/// pads: the object enters the "C" of thumb and fingers, and closing wraps both around it. (With
+/// the thumb in the palm plane its flexion axis is within 8 degrees of the palm normal: it sweeps
+/// across the palm and never opposes the fingers.)
 [[nodiscard]] inline Vec<20> human_preshape() {
   Vec<20> q = Vec<20>::Zero();
   constexpr auto& h = models::human_hand;
@@ -47,7 +50,7 @@ struct GraspSimOptions {
                         "middle_pip", "ring_pip", "pinky_pip"})
     q[h.find_joint(j)] = 0.1;
   q[h.joint("thumb_cmc1")] = 0.3;
-  q[h.joint("thumb_cmc2")] = 0.43;
+  q[h.joint("thumb_cmc2")] = -deg(50.0);  // full palmar abduction (the joint's lower limit)
   return q;
 }
 
