@@ -14,7 +14,7 @@ ExperimentConfig small_config(int jobs) {
   c.methods = {TransferMethod::topological, TransferMethod::transplant, TransferMethod::fingertip};
   c.jobs = jobs;
   c.seed = 7;
-  c.max_hypotheses = 8;
+  c.max_hypotheses = 4;  // a few grasps per object: the sanitizer build runs this too
   return c;
 }
 
@@ -30,11 +30,12 @@ TEST_CASE("a small experiment: counts, schema and determinism", "[grasp][experim
   REQUIRE(results.size() == 2);
   for (const ObjectResult& r : results) {
     INFO(r.object.name);
-    CHECK(r.hypotheses == 8);
-    CHECK(r.human.size() == 8);
+    CHECK(r.hypotheses == 4);
+    CHECK(r.human.size() == 4);
     int stable = 0;
     for (const HumanGrasp& g : r.human) stable += g.stable() ? 1 : 0;
     CHECK(r.stable_human() == stable);
+    CHECK(stable > 0);  // so that every method is exercised
     REQUIRE(r.methods.size() == 3);
     for (std::size_t m = 0; m < 3; ++m) {
       CHECK(r.methods[m].tested == stable);
@@ -195,5 +196,5 @@ TEST_CASE("shards split the hypotheses without overlap", "[grasp][experiment]") 
     for (const HumanGrasp& g : r[0].human) CHECK(g.id % 3 == k);
     total += r[0].hypotheses;
   }
-  CHECK(total == 8);
+  CHECK(total == 4);
 }
