@@ -45,7 +45,7 @@ struct TransferOptions {
     return o;
   }();
   double winding_precision_mid = 1e1;  ///< precision of the winding targets on the way
-  double winding_precision_end = 1e3;  ///< and at the end
+  double winding_precision_end = 1e4;  ///< and at the end
   double collision_margin = 0.015;     ///< m
   double collision_precision = 1e3;
   double approach_precision_mid = 1e1;  ///< the SDH's approach axis along the human's
