@@ -33,6 +33,8 @@ options:
   --seed S         seed of the shake tests (default 1); same seed, same results
   --shard K/N      run only hypotheses with id % N == K - 1 (1 <= K <= N), for job arrays
   --max-hypotheses M  only the first M hypotheses of each object (default all)
+  --winding-reference R  where the windings are taken: centre_of_mass (default, the paper)
+                   or nearest_point (the object's point nearest the human's grasp centre)
   --set NAME=VALUE  set a transfer parameter (repeatable; the names and defaults are listed
                    below, their meaning in docs/transfer.md), e.g. --set final_approach=0.1
   --figures        also write DIR/figures/*.svg and DIR/index.html (Fig. 5-7, Table I)
@@ -106,6 +108,8 @@ Cli parse(int argc, char** argv) {
         throw std::invalid_argument("--shard: expected 1 <= K <= N, got \"" + s + "\"");
       cli.config.shard_index = k - 1;
       cli.config.shard_count = n;
+    } else if (arg == "--winding-reference") {
+      cli.config.transfer.winding_reference = winding_reference(value());
     } else if (arg == "--set") {
       const std::string s = value();
       const auto eq = s.find('=');

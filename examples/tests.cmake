@@ -15,7 +15,8 @@ foreach(case IN ITEMS "unknown object|--objects,anvil|unknown object \"anvil\""
                       "unwritable out|--out,/proc/grasp_transfer|--out: cannot write"
                       "unknown parameter|--set,reach=1|unknown transfer parameter \"reach\""
                       "negative parameter|--set,final_approach=-1|value: final_approach must be"
-                      "parameter without value|--set,final_approach|--set: expected NAME=VALUE")
+                      "parameter without value|--set,final_approach|--set: expected NAME=VALUE"
+                      "unknown winding reference|--winding-reference,palm|winding_reference: unknown reference")
   string(REPLACE "|" ";" parts "${case}")
   list(GET parts 0 name)
   list(GET parts 1 args)

@@ -1,4 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include <catch2/catch.hpp>
 
 #include <topograsp/grasp/experiment.hpp>
@@ -146,6 +150,36 @@ TEST_CASE("the line task keeps the SDH on the part the human held", "[grasp][tra
   CHECK(on_line.stable());
 }
 
+TEST_CASE("the windings can be taken around the point nearest the human's grasp", "[grasp]") {
+  const GraspObject hammer = objects::hammer();
+  const HumanGrasp g = demonstrate(hammer, box_hypotheses(hammer)[0], 0);  // the handle's end
+  REQUIRE(g.stable());
+  const Vec3 com = hammer.centre_of_mass();
+  CHECK(winding_reference_point(hammer, g, WindingReference::centre_of_mass) == com);
+  // The descriptor recomputed from the hand's own frame is the demonstration's.
+  CHECK((human_descriptor(g, com).values - g.descriptor.values).norm() < 1e-9);
+  const Vec3 p = winding_reference_point(hammer, g, WindingReference::nearest_point);
+  const Vec3 c = detail::sdh_grasp_target(g).translation();  // the human's grasp centre
+  double surface = std::numeric_limits<double>::infinity();
+  const Composite shape = hammer.composite();
+  for (const Primitive& part : shape.parts()) surface = std::min(surface, signed_distance(part, p));
+  // On the surface (or the grasp centre itself, inside the object), nearer than the COM.
+  CHECK((std::abs(surface) < 1e-9 || p == c));
+  CHECK((p - c).norm() < (com - c).norm());
+  // Around it the human winds more than around the distant centre of mass.
+  const Vec2 y = human_descriptor(g, p).values;
+  CHECK(y[0] > g.descriptor.values[0]);
+  TransferOptions options;
+  options.winding_reference = WindingReference::nearest_point;
+  const RobotGrasp r = transfer_topological(hammer, g, options);
+  CHECK(r.planned);
+  REQUIRE(!r.winding_targets.empty());
+  CHECK((r.winding_targets.back() - y).norm() < 1e-12);
+  CHECK(winding_reference("nearest_point") == WindingReference::nearest_point);
+  CHECK(winding_reference("centre_of_mass") == WindingReference::centre_of_mass);
+  CHECK_THROWS_WITH(winding_reference("palm"), Catch::StartsWith("winding_reference"));
+}
+
 TEST_CASE("bad experiment input is rejected by name", "[grasp][bad-input]") {
   CHECK_THROWS_WITH(transfer_method("teleport"), Catch::Contains("method"));
   CHECK(transfer_method("fingertip") == TransferMethod::fingertip);
@@ -182,6 +216,7 @@ TEST_CASE("transfer parameters are set and recorded by name", "[grasp][bad-input
   for (const auto& [name, field] : transfer_parameters)
     CHECK(t.at(std::string(name)).as_number() == o.*field);
   CHECK(t.at("final_approach").as_number() == 0.1);
+  CHECK(t.at("winding_reference").as_string() == "centre_of_mass");
 }
 
 TEST_CASE("shards split the hypotheses without overlap", "[grasp][experiment]") {

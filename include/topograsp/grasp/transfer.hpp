@@ -11,12 +11,15 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
 #include <topograsp/aico/solver.hpp>
+#include <topograsp/geometry/signed_distance.hpp>
 #include <topograsp/grasp/human_grasps.hpp>
 #include <topograsp/task/axis_task.hpp>
 #include <topograsp/task/collision_task.hpp>
@@ -25,6 +28,29 @@
 #include <topograsp/task/task_set.hpp>
 
 namespace topograsp {
+
+/// The point the windings of the topological transfer are taken around, for the human's
+/// descriptor and the SDH's targets alike.
+enum class WindingReference : std::uint8_t {
+  centre_of_mass,  ///< the object's centre of mass (the paper)
+  nearest_point,   ///< the point of the object nearest the human's grasp centre
+};
+
+/// The name of \p r ("centre_of_mass", "nearest_point").
+[[nodiscard]] constexpr std::string_view to_string(WindingReference r) noexcept {
+  return r == WindingReference::nearest_point ? "nearest_point" : "centre_of_mass";
+}
+
+/// The reference called \p name ("centre_of_mass" or "nearest_point").
+/// \throws topograsp::invalid_argument naming "winding_reference" for any other name.
+[[nodiscard]] inline WindingReference winding_reference(std::string_view name) {
+  for (const WindingReference r :
+       {WindingReference::centre_of_mass, WindingReference::nearest_point})
+    if (to_string(r) == name) return r;
+  detail::throw_invalid_argument(
+      "winding_reference",
+      "unknown reference \"" + std::string(name) + "\" (expected centre_of_mass or nearest_point)");
+}
 
 /// The parameters of the transfer methods; every field has a default used by grasp_transfer.
 struct TransferOptions {
@@ -44,6 +70,9 @@ struct TransferOptions {
     o.tolerance = 1e-3;
     return o;
   }();
+  /// Where the windings are taken (topological). The centre of mass is the paper's choice;
+  /// the nearest point keeps grasps far from it (a hammer's head) informative, docs/results.md.
+  WindingReference winding_reference = WindingReference::centre_of_mass;
   double winding_precision_mid = 1e1;  ///< precision of the winding targets on the way
   double winding_precision_end = 1e4;  ///< and at the end
   double collision_margin = 0.015;     ///< m
@@ -115,9 +144,11 @@ struct RobotGrasp {
   Eigen::Isometry3d hand_pose = Eigen::Isometry3d::Identity();  ///< SDH palm, object frame
   Vec<7> q_open = Vec<7>::Zero();                               ///< the SDH's joints before closing
   Vec<7> q_closed = Vec<7>::Zero();                             ///< after closing and squeezing
-  Vec2 winding = Vec2::Zero();  ///< w of the SDH's two curves around the centre of mass
-  double plan_ms = 0.0;         ///< time of the method's own planning (ms)
-  int sweeps = 0;               ///< AICO sweeps (topological only)
+  /// w of the SDH's two curves after closing, around the centre of mass (topological: around
+  /// its winding reference).
+  Vec2 winding = Vec2::Zero();
+  double plan_ms = 0.0;  ///< time of the method's own planning (ms)
+  int sweeps = 0;        ///< AICO sweeps (topological only)
   /// Topological only: the windings of the SDH's curves at each step of the plan and their
   /// targets (the paper's Fig. 7), and AICO's sweeps.
   std::vector<Vec2> winding_plan, winding_targets;
@@ -191,13 +222,12 @@ inline double sdh_human_scale() {
   return robot / human;
 }
 
-// The SDH windings of its two curves around the object's centre of mass.
-inline Vec2 sdh_windings(const GraspObject& object, const Eigen::Isometry3d& root,
-                         const Vec<7>& q) {
+// The SDH windings of its two curves around the point p (object frame).
+inline Vec2 sdh_windings(const Vec3& p, const Eigen::Isometry3d& root, const Vec<7>& q) {
   constexpr auto& s = models::schunk_sdh;
   KinematicsData<s> d;
   forward_kinematics(d, q);
-  return WindingTask<s>(Vec3(root.inverse() * object.centre_of_mass())).value(d);
+  return WindingTask<s>(Vec3(root.inverse() * p)).value(d);
 }
 
 }  // namespace detail
@@ -215,7 +245,7 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
   r.hand_pose = root;
   r.q_open = q_open;
   r.q_closed = closed.q_squeezed;
-  r.winding = detail::sdh_windings(object, root, closed.q_squeezed);
+  r.winding = detail::sdh_windings(object.centre_of_mass(), root, closed.q_squeezed);
   r.object_pose = scene.object_pose();
   r.shake = shake_test(scene, options.sim.shake);
 }
@@ -357,6 +387,32 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
   return r;
 }
 
+/// The point (object frame) that the windings of the topological transfer of \p g are taken
+/// around: the centre of mass, or the point of \p object nearest the human's grasp centre (the
+/// grasp centre itself if it lies inside the object).
+[[nodiscard]] inline Vec3 winding_reference_point(const GraspObject& object, const HumanGrasp& g,
+                                                  WindingReference reference) {
+  if (reference == WindingReference::centre_of_mass) return object.centre_of_mass();
+  const Vec3 c = detail::sdh_grasp_target(g).translation();  // the human's grasp centre
+  const Primitive probe = Primitive::sphere(c, 1e-6);
+  Contact nearest;
+  nearest.distance = std::numeric_limits<double>::infinity();
+  const Composite shape = object.composite();  // parts() views it: keep it alive
+  for (const Primitive& part : shape.parts()) {
+    const Contact k = signed_distance(part, probe);
+    if (k.distance < nearest.distance) nearest = k;
+  }
+  return nearest.distance > 0.0 ? nearest.point_a : c;
+}
+
+/// The human's descriptor y of \p g around \p p (object frame): its two largest windings.
+[[nodiscard]] inline WindingDescriptor human_descriptor(const HumanGrasp& g, const Vec3& p) {
+  constexpr auto& h = models::human_hand;
+  KinematicsData<h> d;
+  forward_kinematics(d, g.q);
+  return winding_descriptor(d, Vec3(g.hand_pose.inverse() * p));
+}
+
 /// The transfer task set of the topological method for the arm + SDH: the windings of the SDH's
 /// two curves around the object's centre of mass (interpolated from the start to the human's
 /// values), the collision potential against the object, the approach axis, the joint limits, and
@@ -367,15 +423,15 @@ using TopologicalTaskSet =
             LineTask<models::schunk_arm_sdh>>;
 
 /// Builds the topological task set for an object at \p T_world_object whose human descriptor is
-/// \p y, with the SDH's approach to be along \p approach (world) on the line through
-/// \p grasp_point (world: the human's grasp centre); \p d holds the kinematics of the start
-/// configuration (the winding targets start from its values).
+/// \p y around \p reference (object frame), with the SDH's approach to be along \p approach
+/// (world) on the line through \p grasp_point (world: the human's grasp centre); \p d holds the
+/// kinematics of the start configuration (the winding targets start from its values).
 [[nodiscard]] inline TopologicalTaskSet topological_tasks(
     const GraspObject& object, const Eigen::Isometry3d& T_world_object, const Vec2& y,
-    const Vec3& grasp_point, const Vec3& approach, const KinematicsData<models::schunk_arm_sdh>& d,
-    const TransferOptions& options) {
+    const Vec3& reference, const Vec3& grasp_point, const Vec3& approach,
+    const KinematicsData<models::schunk_arm_sdh>& d, const TransferOptions& options) {
   constexpr auto& M = models::schunk_arm_sdh;
-  WindingTask<M, 2> winding({0, 1}, T_world_object * object.centre_of_mass());
+  WindingTask<M, 2> winding({0, 1}, T_world_object * reference);
   const Vec2 w0 = winding.value(d);
   TopologicalTaskSet set = make_task_set(
       scheduled(std::move(winding), interpolated_target<2>(w0, y),
@@ -417,10 +473,13 @@ using TopologicalTaskSet =
   const Eigen::Isometry3d human_centre =
       Eigen::Translation3d(options.backoff * approach) * gc;  // world
   const Eigen::Isometry3d T_world_object = human_centre * detail::sdh_grasp_target(g).inverse();
-  const Vec2 y = g.descriptor.values;
+  const Vec3 reference = winding_reference_point(object, g, options.winding_reference);
+  const Vec2 y = options.winding_reference == WindingReference::centre_of_mass
+                     ? g.descriptor.values
+                     : human_descriptor(g, reference).values;
   AicoProblem<M, TopologicalTaskSet> problem(
-      topological_tasks(object, T_world_object, y, human_centre.translation(), approach, d,
-                        options),
+      topological_tasks(object, T_world_object, y, reference, human_centre.translation(), approach,
+                        d, options),
       q0, options.aico);
   AicoWorkspace ws(problem);
   const AicoResult<M.nq> plan = solve(problem, ws);
@@ -450,6 +509,8 @@ using TopologicalTaskSet =
   }
   r.planned = true;
   simulate_sdh_grasp(object, *cleared, q_hand, options, r);
+  if (options.winding_reference != WindingReference::centre_of_mass)
+    r.winding = detail::sdh_windings(reference, *cleared, r.q_closed);
   return r;
 }
 

@@ -69,6 +69,7 @@ inline Json json_vector(const auto& v) {
   Json transfer = Json::object();
   for (const auto& [name, field] : transfer_parameters)
     transfer.set(std::string(name), config.transfer.*field);
+  transfer.set("winding_reference", std::string(to_string(config.transfer.winding_reference)));
   cfg.set("transfer", transfer);
   Json out_objects = Json::array();
   Json grasps = Json::array();
@@ -114,7 +115,10 @@ inline Json json_vector(const auto& v) {
         rec.set("method", to_string(r.methods[m].method));
         rec.set("stable", t.stable());
         rec.set("scene", t.planned ? Json(scene_path(r.object.name, id, t.method)) : Json());
-        rec.set("winding_human", detail::json_vector(g.descriptor.values));
+        // The human's y as the method used it (topological: around its winding reference).
+        rec.set("winding_human",
+                detail::json_vector(t.winding_targets.empty() ? g.descriptor.values
+                                                              : t.winding_targets.back()));
         rec.set("winding_robot", detail::json_vector(t.winding));
         rec.set("plan_ms", t.plan_ms);
         rec.set("sweeps", t.sweeps);
