@@ -9,6 +9,7 @@
 #include <string>
 
 #include <benchmark/benchmark.h>
+#include <topograsp/evaluation.hpp>
 #include <topograsp/io/mjcf.hpp>
 #include <topograsp/model/models.hpp>
 #include <topograsp/physics.hpp>

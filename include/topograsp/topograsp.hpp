@@ -6,6 +6,7 @@
 
 #include <topograsp/aico.hpp>
 #include <topograsp/core.hpp>
+#include <topograsp/evaluation.hpp>
 #include <topograsp/geometry.hpp>
 #include <topograsp/grasp.hpp>
 #include <topograsp/io.hpp>

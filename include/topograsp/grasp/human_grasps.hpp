@@ -7,12 +7,12 @@
 
 #include <optional>
 
+#include <topograsp/evaluation/close_hand.hpp>
+#include <topograsp/evaluation/shake_test.hpp>
 #include <topograsp/grasp/hand_axes.hpp>
 #include <topograsp/grasp/hypothesis.hpp>
 #include <topograsp/grasp/placement.hpp>
 #include <topograsp/model/models.hpp>
-#include <topograsp/physics/close_hand.hpp>
-#include <topograsp/physics/shake_test.hpp>
 #include <topograsp/task/winding_descriptor.hpp>
 #include <topograsp/task/winding_task.hpp>
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include <topograsp/physics/hand_scene.hpp>
+#include <topograsp/evaluation/hand_scene.hpp>
 #include <topograsp/physics/world.hpp>
 
 namespace topograsp {

@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include <topograsp/core/constants.hpp>
-#include <topograsp/physics/hand_scene.hpp>
+#include <topograsp/evaluation/hand_scene.hpp>
 
 namespace topograsp {
 
@@ -19,7 +19,7 @@ enum class ShakePivot : std::uint8_t {
   object,  ///< the object's centre of mass at the start of the shake
 };
 
-/// The parameters of shake_test() and gravity_test(); defaults as in docs/stepper.md.
+/// The parameters of shake_test() and gravity_test(); defaults as in docs/evaluation.md.
 struct ShakeOptions {
   /// Steps of settling under gravity, hand still, before the measurement starts. Default 30
   /// (0.5 s at 60 Hz).

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Once a scene is built, stepping it allocates nothing: counted with a replaced global operator
 // new and checked by Eigen's run-time malloc guard (EIGEN_RUNTIME_NO_MALLOC, defined for the whole
-// executable by physics_test_support.hpp). Also: the float instantiation compiles and runs.
-#include "physics_test_support.hpp"
+// executable by evaluation_test_support.hpp). Also: the float instantiation compiles and runs.
+#include "evaluation_test_support.hpp"
 
 #include <atomic>
 #include <cstdlib>
@@ -40,9 +40,8 @@ void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 using namespace topograsp;
 
-// Explicit instantiations: every member of the stepper compiles for both scalar types.
-template class topograsp::World<double>;
-template class topograsp::World<float>;
+// Explicit instantiation: every member of the hand scene compiles for float (the stepper's own
+// instantiations are in tests/physics/test_instantiation.cpp).
 template class topograsp::HandScene<models::schunk_sdh, float>;
 
 TEST_CASE("stepping a built scene and shaking it allocate nothing", "[physics][alloc]") {

@@ -6,7 +6,7 @@
 
 #include <array>
 
-#include <topograsp/physics/shake_test.hpp>
+#include <topograsp/evaluation/shake_test.hpp>
 
 namespace topograsp {
 

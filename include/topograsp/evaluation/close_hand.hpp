@@ -8,7 +8,7 @@
 #include <vector>
 
 #include <topograsp/core/constants.hpp>
-#include <topograsp/physics/hand_scene.hpp>
+#include <topograsp/evaluation/hand_scene.hpp>
 
 namespace topograsp {
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // MJCF export: the text names the mocap hand and the free object with its mass and inertia; with
 // MuJoCo found, the file loads back and matches the scene.
-#include "physics_test_support.hpp"
+#include "evaluation_test_support.hpp"
 
 #include <cstdio>
 #include <filesystem>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Hand scenes: closing each shipped hand on a cylinder, the shake test and the six-gravity test,
 // determinism, bad input.
-#include "physics_test_support.hpp"
+#include "evaluation_test_support.hpp"
 
 #include <cstring>
 
