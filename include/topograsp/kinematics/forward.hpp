@@ -124,6 +124,15 @@ template <const auto& M>
   return d.p[l] + d.R[l] * Eigen::Map<const Vec3>(p.offset.data());
 }
 
+/// The world pose of link \p l as an isometry: rotation d.R[l], translation d.p[l].
+template <const auto& M>
+[[nodiscard]] Eigen::Isometry3d link_pose(const KinematicsData<M>& d, int l) noexcept {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = d.R[static_cast<std::size_t>(l)];
+  T.translation() = d.p[static_cast<std::size_t>(l)];
+  return T;
+}
+
 /// The world pose of frame \p f as an isometry.
 template <const auto& M>
 [[nodiscard]] Eigen::Isometry3d frame_pose(const KinematicsData<M>& d, int f) noexcept {
