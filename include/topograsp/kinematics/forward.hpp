@@ -55,9 +55,9 @@ inline void fk_link(KinematicsData<M>& d, const D& q) noexcept {
     d.p[I] = pj;
     d.axis[I].setZero();
   } else {
-    constexpr double mult = link.actuated ? 1.0 : link.spec.multiplier;
-    constexpr double off = link.actuated ? 0.0 : link.spec.offset;
-    const double value = mult * q[link.q] + off;
+    // The link's own joint is the first of its support: its entry, mimic multiplier and offset.
+    constexpr SupportJoint joint = M.support(static_cast<int>(I)).joints[0];
+    const double value = joint.multiplier * q[joint.q] + joint.offset;
     constexpr auto k = static_cast<int>(link.axis_kind);
     if constexpr (link.axis_kind != AxisKind::general)
       d.axis[I] = link.axis[static_cast<std::size_t>(k)] * Rj.col(k);
