@@ -74,9 +74,7 @@ KinematicGrasp<M> grasp(const GraspObject& object, const HandAxes& axes, const V
   KinematicGrasp<M> g;
   KinematicsData<Free> df;
   forward_kinematics(df, touched ? *touched : start);
-  const auto palm = static_cast<std::size_t>(Free.link("palm"));
-  g.T_object_hand.linear() = df.R[palm];
-  g.T_object_hand.translation() = df.p[palm];
+  g.T_object_hand = link_pose(df, Free.link("palm"));
   // Close, in the hand frame.
   const Composite local = object.composite(g.T_object_hand.inverse());
   const WindingTask<M> winding(g.T_object_hand.inverse() * object.centre_of_mass());

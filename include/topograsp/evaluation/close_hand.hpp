@@ -44,18 +44,16 @@ struct CloseResult {
 
 namespace physics_detail {
 
-// Links moved by configuration entry i: those with an ancestor (or itself) driven by entry i.
+// Links moved by configuration entry i: those with a joint driven by entry i in their support.
 template <const auto& M>
 std::array<bool, std::remove_cvref_t<decltype(M)>::n_links> links_after_joint(int i) {
   std::array<bool, std::remove_cvref_t<decltype(M)>::n_links> mask{};
   for (std::size_t l = 0; l < mask.size(); ++l)
-    for (int a = static_cast<int>(l); a >= 0; a = M.links[static_cast<std::size_t>(a)].parent) {
-      const Link& link = M.links[static_cast<std::size_t>(a)];
-      if (link.spec.type != JointType::fixed && link.q == i) {
+    for (const SupportJoint& j : M.support(static_cast<int>(l)))
+      if (j.q == i) {
         mask[l] = true;
         break;
       }
-    }
   return mask;
 }
 

@@ -119,10 +119,7 @@ class HandScene {
 
   /// The world pose of link \p l at the current targets and hand pose (after forward kinematics).
   [[nodiscard]] Eigen::Isometry3d link_pose(int l) const noexcept {
-    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-    T.linear() = kin_.R[static_cast<std::size_t>(l)];
-    T.translation() = kin_.p[static_cast<std::size_t>(l)];
-    return hand_pose_ * T;
+    return hand_pose_ * topograsp::link_pose(kin_, l);
   }
 
   /// The number of hand-object contact points with a separation of at most \p max_separation (m).

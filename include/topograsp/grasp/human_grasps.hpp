@@ -97,9 +97,7 @@ struct HumanGrasp {
   g.reached = true;
   KinematicsData<free> d;
   forward_kinematics(d, *touched);
-  const auto palm = static_cast<std::size_t>(free.link("palm"));
-  g.hand_pose.linear() = d.R[palm];
-  g.hand_pose.translation() = d.p[palm];
+  g.hand_pose = link_pose(d, free.link("palm"));
   HandSceneOptions scene_options = options.scene;
   scene_options.friction = object.friction;
   HandScene<models::human_hand> scene(g.hand_pose, pre, object_spec(object), scene_options);

@@ -263,10 +263,7 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
   KinematicsData<f> d;
   const auto root_of = [&](const Vec<13>& q) {
     forward_kinematics(d, q);
-    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-    T.linear() = d.R[static_cast<std::size_t>(palm)];
-    T.translation() = d.p[static_cast<std::size_t>(palm)];
-    return T;
+    return link_pose(d, palm);
   };
   // The palm_centre frame sits on the palm, unrotated, base_height above the root.
   const Vec<13> q = place_frame<f>(root * Eigen::Translation3d(0, 0, models::sdh_dims::base_height),
@@ -371,10 +368,7 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
     }
   }
   forward_kinematics(d, q);
-  const auto palm = static_cast<std::size_t>(f.link("palm"));
-  Eigen::Isometry3d fitted = Eigen::Isometry3d::Identity();
-  fitted.linear() = d.R[palm];
-  fitted.translation() = d.p[palm];
+  const Eigen::Isometry3d fitted = link_pose(d, f.link("palm"));
   const Vec<7> q_hand = q.tail<7>();
   const auto root = place_at_contact(object, fitted, q_hand, fitted.linear().col(2), options.sim);
   r.plan_ms = detail::ms_since(t0);
@@ -495,11 +489,7 @@ using TopologicalTaskSet =
   }
   const Vec<14> qT = plan.q.back();
   forward_kinematics(d, qT);
-  const auto palm = static_cast<std::size_t>(M.link("palm"));
-  Eigen::Isometry3d root_world = Eigen::Isometry3d::Identity();
-  root_world.linear() = d.R[palm];
-  root_world.translation() = d.p[palm];
-  const Eigen::Isometry3d root = T_world_object.inverse() * root_world;
+  const Eigen::Isometry3d root = T_world_object.inverse() * link_pose(d, M.link("palm"));
   const Vec<7> q_hand = clamp_to_limits<models::schunk_sdh>(qT.tail<7>());
   const auto cleared = place_at_contact(object, root, q_hand, root.linear().col(2), options.sim,
                                         options.final_approach);

@@ -55,9 +55,9 @@ inline void fk_link(KinematicsData<M>& d, const D& q) noexcept {
     d.p[I] = pj;
     d.axis[I].setZero();
   } else {
-    constexpr double mult = link.actuated ? 1.0 : link.spec.multiplier;
-    constexpr double off = link.actuated ? 0.0 : link.spec.offset;
-    const double value = mult * q[link.q] + off;
+    // The link's own joint is the first of its support: its entry, mimic multiplier and offset.
+    constexpr SupportJoint joint = M.support(static_cast<int>(I)).joints[0];
+    const double value = joint.multiplier * q[joint.q] + joint.offset;
     constexpr auto k = static_cast<int>(link.axis_kind);
     if constexpr (link.axis_kind != AxisKind::general)
       d.axis[I] = link.axis[static_cast<std::size_t>(k)] * Rj.col(k);
@@ -122,6 +122,15 @@ template <const auto& M>
 [[nodiscard]] Vec3 world_point(const KinematicsData<M>& d, const LinkPoint& p) noexcept {
   const auto l = static_cast<std::size_t>(p.link);
   return d.p[l] + d.R[l] * Eigen::Map<const Vec3>(p.offset.data());
+}
+
+/// The world pose of link \p l as an isometry: rotation d.R[l], translation d.p[l].
+template <const auto& M>
+[[nodiscard]] Eigen::Isometry3d link_pose(const KinematicsData<M>& d, int l) noexcept {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = d.R[static_cast<std::size_t>(l)];
+  T.translation() = d.p[static_cast<std::size_t>(l)];
+  return T;
 }
 
 /// The world pose of frame \p f as an isometry.

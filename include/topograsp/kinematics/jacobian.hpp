@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
 /// Frame and point Jacobians in the world frame, with mimic joints folded in by the chain rule.
-/// All of them read a KinematicsData filled by forward_kinematics() at the same configuration.
+/// All of them read a KinematicsData filled by forward_kinematics() at the same configuration, and
+/// walk the link's support (Model::support(): the joints that move it, computed at compile time).
 #pragma once
 
 #include <topograsp/kinematics/forward.hpp>
@@ -15,15 +16,12 @@ template <const auto& M, class Derived>
 void add_point_jacobian(const KinematicsData<M>& d, int link, const Vec3& p_world,
                         Eigen::MatrixBase<Derived> const& J_pos_) noexcept {
   auto& J_pos = const_cast<Eigen::MatrixBase<Derived>&>(J_pos_);
-  for (int a = link; a >= 0; a = M.links[static_cast<std::size_t>(a)].parent) {
-    const Link& l = M.links[static_cast<std::size_t>(a)];
-    if (l.spec.type == JointType::fixed) continue;
-    const double mult = l.actuated ? 1.0 : l.spec.multiplier;
-    const auto u = static_cast<std::size_t>(a);
-    if (l.spec.type == JointType::revolute)
-      J_pos.col(l.q) += mult * d.axis[u].cross(p_world - d.p[u]);
+  for (const SupportJoint& j : M.support(link)) {
+    const auto u = static_cast<std::size_t>(j.link);
+    if (j.type == JointType::revolute)
+      J_pos.col(j.q) += j.multiplier * d.axis[u].cross(p_world - d.p[u]);
     else
-      J_pos.col(l.q) += mult * d.axis[u];
+      J_pos.col(j.q) += j.multiplier * d.axis[u];
   }
 }
 
@@ -40,11 +38,9 @@ template <const auto& M>
 template <const auto& M>
 [[nodiscard]] Mat<3, M.nq> link_rotation_jacobian(const KinematicsData<M>& d, int link) noexcept {
   Mat<3, M.nq> J = Mat<3, M.nq>::Zero();
-  for (int a = link; a >= 0; a = M.links[static_cast<std::size_t>(a)].parent) {
-    const Link& l = M.links[static_cast<std::size_t>(a)];
-    if (l.spec.type != JointType::revolute) continue;
-    J.col(l.q) += (l.actuated ? 1.0 : l.spec.multiplier) * d.axis[static_cast<std::size_t>(a)];
-  }
+  for (const SupportJoint& j : M.support(link))
+    if (j.type == JointType::revolute)
+      J.col(j.q) += j.multiplier * d.axis[static_cast<std::size_t>(j.link)];
   return J;
 }
 
@@ -68,16 +64,13 @@ template <const auto& M>
   const auto u = static_cast<std::size_t>(f);
   const int link = M.frames[u].link;
   Mat<6, M.nq> J = Mat<6, M.nq>::Zero();
-  for (int a = link; a >= 0; a = M.links[static_cast<std::size_t>(a)].parent) {
-    const Link& l = M.links[static_cast<std::size_t>(a)];
-    if (l.spec.type == JointType::fixed) continue;
-    const double mult = l.actuated ? 1.0 : l.spec.multiplier;
-    const auto v = static_cast<std::size_t>(a);
-    if (l.spec.type == JointType::revolute) {
-      J.template block<3, 1>(0, l.q) += mult * d.axis[v].cross(d.frame_p[u] - d.p[v]);
-      J.template block<3, 1>(3, l.q) += mult * d.axis[v];
+  for (const SupportJoint& j : M.support(link)) {
+    const auto v = static_cast<std::size_t>(j.link);
+    if (j.type == JointType::revolute) {
+      J.template block<3, 1>(0, j.q) += j.multiplier * d.axis[v].cross(d.frame_p[u] - d.p[v]);
+      J.template block<3, 1>(3, j.q) += j.multiplier * d.axis[v];
     } else {
-      J.template block<3, 1>(0, l.q) += mult * d.axis[v];
+      J.template block<3, 1>(0, j.q) += j.multiplier * d.axis[v];
     }
   }
   return J;

@@ -26,6 +26,31 @@ struct Link {
   friend constexpr bool operator==(const Link&, const Link&) = default;
 };
 
+/// A joint on the path from a link to the root, with what a Jacobian column needs of it.
+struct SupportJoint {
+  int link = -1;  ///< the link whose joint this is (its world axis and origin are in the data)
+  int q = -1;     ///< the configuration entry that drives the joint
+  JointType type = JointType::revolute;  ///< revolute or prismatic (fixed joints are left out)
+  /// d(joint value) / d q[q]: 1 for an actuated joint, the mimic multiplier for a mimic joint.
+  double multiplier = 1.0;
+  double offset = 0.0;  ///< the joint value is multiplier * q[q] + offset (0 unless mimic)
+  friend constexpr bool operator==(const SupportJoint&, const SupportJoint&) = default;
+};
+
+/// The support of a link in a model of NL links: the joints that move it, which are its own joint
+/// and those of its ancestors with fixed joints left out, the link's own first and the one
+/// nearest the root last (the order of a walk up the tree, which is the order in which the
+/// Jacobians add their columns). Iterate it with a range-for.
+template <std::size_t NL>
+struct Support {
+  std::array<SupportJoint, NL> joints{};
+  int size = 0;  ///< how many entries of joints are used
+
+  [[nodiscard]] constexpr const SupportJoint* begin() const noexcept { return joints.data(); }
+  [[nodiscard]] constexpr const SupportJoint* end() const noexcept { return joints.data() + size; }
+  friend constexpr bool operator==(const Support&, const Support&) = default;
+};
+
 /// A shape of a checked model.
 struct Shape {
   ShapeSpec spec;
@@ -77,6 +102,8 @@ struct Model {
   int thumb = -1;    ///< index of the thumb in fingers; -1 if not a hand
   int nq = 0;        ///< number of configuration entries (actuated joints)
   std::array<int, NL> q_link{};  ///< for each configuration entry, the link whose joint owns it
+  /// The support of each link (the joints that move it), computed once by make_model().
+  std::array<Support<NL>, NL> supports{};
 
   /// True if the model declares fingers (and so a thumb and a palm centre).
   [[nodiscard]] constexpr bool is_hand() const noexcept { return NH > 0; }
@@ -123,6 +150,10 @@ struct Model {
     const int i = find_joint(n);
     if (i < 0) detail::model_error("no actuated joint of that name");
     return i;
+  }
+  /// The support of link \p l: the joints that move it, its own first, the root's last.
+  [[nodiscard]] constexpr const Support<NL>& support(int l) const noexcept {
+    return supports[static_cast<std::size_t>(l)];
   }
   /// The name of configuration entry \p i.
   [[nodiscard]] constexpr std::string_view joint_name(int i) const noexcept {
@@ -208,6 +239,19 @@ template <std::size_t NL, std::size_t NS, std::size_t NF, std::size_t NH>
     const Link& s = m.links[static_cast<std::size_t>(src)];
     if (!s.actuated) detail::model_error("mimic of a joint that is fixed or itself a mimic");
     l.q = s.q;
+  }
+  // Supports: a link's own joint (unless fixed), then its parent's support. This is the one
+  // walk up the tree; Jacobians, gradients and the "links moved by a joint" masks read it.
+  for (std::size_t i = 0; i < NL; ++i) {
+    const Link& l = m.links[i];
+    Support<NL>& s = m.supports[i];
+    if (l.spec.type != JointType::fixed)
+      s.joints[static_cast<std::size_t>(s.size++)] = {static_cast<int>(i), l.q, l.spec.type,
+                                                      l.actuated ? 1.0 : l.spec.multiplier,
+                                                      l.actuated ? 0.0 : l.spec.offset};
+    if (l.parent < 0) continue;
+    for (const SupportJoint& j : m.supports[static_cast<std::size_t>(l.parent)])
+      s.joints[static_cast<std::size_t>(s.size++)] = j;
   }
   // Shapes.
   for (std::size_t i = 0; i < NS; ++i) {

@@ -15,15 +15,12 @@ template <const auto& M, class Derived>
 inline void add_point_gradient(const KinematicsData<M>& d, int link, const Vec3& x_world,
                                const Vec3& g, Eigen::MatrixBase<Derived> const& row_) noexcept {
   auto& row = const_cast<Eigen::MatrixBase<Derived>&>(row_);
-  for (int a = link; a >= 0; a = M.links[static_cast<std::size_t>(a)].parent) {
-    const Link& l = M.links[static_cast<std::size_t>(a)];
-    if (l.spec.type == JointType::fixed) continue;
-    const double mult = l.actuated ? 1.0 : l.spec.multiplier;
-    const auto u = static_cast<std::size_t>(a);
-    if (l.spec.type == JointType::revolute)
-      row(0, l.q) += mult * g.dot(d.axis[u].cross(x_world - d.p[u]));
+  for (const SupportJoint& j : M.support(link)) {
+    const auto u = static_cast<std::size_t>(j.link);
+    if (j.type == JointType::revolute)
+      row(0, j.q) += j.multiplier * g.dot(d.axis[u].cross(x_world - d.p[u]));
     else
-      row(0, l.q) += mult * g.dot(d.axis[u]);
+      row(0, j.q) += j.multiplier * g.dot(d.axis[u]);
   }
 }
 
@@ -34,12 +31,9 @@ template <const auto& M, class Derived>
 inline void add_rotation_gradient(const KinematicsData<M>& d, int link, const Vec3& g,
                                   Eigen::MatrixBase<Derived> const& row_) noexcept {
   auto& row = const_cast<Eigen::MatrixBase<Derived>&>(row_);
-  for (int a = link; a >= 0; a = M.links[static_cast<std::size_t>(a)].parent) {
-    const Link& l = M.links[static_cast<std::size_t>(a)];
-    if (l.spec.type != JointType::revolute) continue;
-    const double mult = l.actuated ? 1.0 : l.spec.multiplier;
-    row(0, l.q) += mult * g.dot(d.axis[static_cast<std::size_t>(a)]);
-  }
+  for (const SupportJoint& j : M.support(link))
+    if (j.type == JointType::revolute)
+      row(0, j.q) += j.multiplier * g.dot(d.axis[static_cast<std::size_t>(j.link)]);
 }
 
 }  // namespace topograsp::detail
