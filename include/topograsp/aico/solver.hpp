@@ -14,7 +14,6 @@
 #include <topograsp/aico/detail/task_parts.hpp>
 #include <topograsp/aico/problem.hpp>
 #include <topograsp/aico/result.hpp>
-#include <topograsp/aico/sweep_record.hpp>
 #include <topograsp/aico/workspace.hpp>
 #include <topograsp/kinematics/forward.hpp>
 
