@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
   options.steps = 40;
   options.control_precision = 1e-2;
   options.max_sweeps = 100;
-  TopologyOptions topology;
+  TopologicalOptions topology;
   Vec2 goal(0.8, 0.8);
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
     } else if (a == "--mode" && has_value) {
       const std::string m = argv[++i];
       if (m != "direct" && m != "coupled") return usage(argv[0], 2);
-      topology.mode = m == "direct" ? TopologyMode::direct : TopologyMode::coupled;
+      topology.mode = m == "direct" ? TopologicalMode::direct : TopologicalMode::coupled;
     } else if (a == "--goal" && has_value) {
       if (std::sscanf(argv[++i], "%lf,%lf", &goal[0], &goal[1]) != 2) return usage(argv[0], 2);
     } else {

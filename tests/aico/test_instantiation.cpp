@@ -43,3 +43,21 @@ TEST_CASE("the SVG plot writer draws axes, series and legend", "[aico][svg]") {
   CHECK_THROWS_AS(plot.add_series("bad", {0.0, 1.0}, {0.0}), topograsp::invalid_argument);
   CHECK_THROWS_AS(plot.add_series("nan", {0.0}, {std::nan("")}), topograsp::invalid_argument);
 }
+
+TEST_CASE("every aico enum has a name, and an unknown value is named so", "[aico][static]") {
+  using namespace topograsp;
+  STATIC_REQUIRE(to_string(AicoMode::dynamic) == "dynamic");
+  STATIC_REQUIRE(to_string(AicoMode::kinematic) == "kinematic");
+  STATIC_REQUIRE(to_string(SweepMode::symmetric) == "symmetric");
+  STATIC_REQUIRE(to_string(SweepMode::local_gauss_newton) == "local_gauss_newton");
+  STATIC_REQUIRE(to_string(TopologicalMode::direct) == "direct");
+  STATIC_REQUIRE(to_string(TopologicalMode::coupled) == "coupled");
+  STATIC_REQUIRE(to_string(AicoTermination::step_tolerance) == "step_tolerance");
+  STATIC_REQUIRE(to_string(AicoTermination::cost_tolerance) == "cost_tolerance");
+  STATIC_REQUIRE(to_string(AicoTermination::max_sweeps) == "max_sweeps");
+  STATIC_REQUIRE(to_string(AicoTermination::max_rejections) == "max_rejections");
+  STATIC_REQUIRE(to_string(AicoTermination::non_finite) == "non_finite");
+  STATIC_REQUIRE(to_string(AicoTermination::factorisation) == "factorisation");
+  STATIC_REQUIRE(to_string(static_cast<AicoTermination>(6)) == "unknown");
+  STATIC_REQUIRE(to_string(static_cast<SweepMode>(-1)) == "unknown");
+}

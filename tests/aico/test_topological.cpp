@@ -26,10 +26,11 @@ Vec2 windings_at(const test::WrapScene& scene, const Vec<test::wrap_nq>& q) {
 
 }  // namespace
 
-TEST_CASE("direct winding targets are reached within 0.05 without collision", "[aico][topology]") {
+TEST_CASE("direct winding targets are reached within 0.05 without collision",
+          "[aico][topological]") {
   const test::WrapScene scene;
-  TopologyOptions topo;
-  topo.mode = TopologyMode::direct;
+  TopologicalOptions topo;
+  topo.mode = TopologicalMode::direct;
   const auto r = solve_topological<test::wrap_robot>(scene.base(), scene.windings(), scene.goal,
                                                      scene.home, wrap_options(), topo);
   INFO(to_string(r.aico.termination) << " after " << r.aico.sweeps << " sweeps");
@@ -50,10 +51,10 @@ TEST_CASE("direct winding targets are reached within 0.05 without collision", "[
   CHECK(r.aico.task_costs.size() == 4);
 }
 
-TEST_CASE("the coupled topology layer reaches the same goal", "[aico][topology]") {
+TEST_CASE("the coupled topological layer reaches the same goal", "[aico][topological]") {
   const test::WrapScene scene;
-  TopologyOptions topo;
-  topo.mode = TopologyMode::coupled;
+  TopologicalOptions topo;
+  topo.mode = TopologicalMode::coupled;
   topo.max_rounds = 3;
   AicoOptions o = wrap_options();
   o.steps = 20;  // short, so that the suite stays fast under the sanitizers
@@ -74,7 +75,7 @@ TEST_CASE("the coupled topology layer reaches the same goal", "[aico][topology]"
   CHECK(scene.base().collision.min_distance(d) > -0.002);
 }
 
-TEST_CASE("the y smoother is the exact minimiser of its chain", "[aico][topology]") {
+TEST_CASE("the y smoother is the exact minimiser of its chain", "[aico][topological]") {
   // Two coordinates, T = 6: compare with the dense normal equations.
   const int T = 6;
   const double w = 3.0, rho = 2.0;
@@ -82,7 +83,7 @@ TEST_CASE("the y smoother is the exact minimiser of its chain", "[aico][topology
   y.front() = Vec2(0.1, -0.2);
   y.back() = Vec2(1.0, 0.5);
   for (int t = 0; t <= T; ++t) phi[static_cast<std::size_t>(t)] = Vec2(0.3 * t, std::sin(t));
-  detail::smooth_topology(y, phi, w, rho);
+  detail::smooth_topological_targets(y, phi, w, rho);
   for (int j = 0; j < 2; ++j) {
     MatX H = MatX::Zero(T - 1, T - 1);
     VecX g = VecX::Zero(T - 1);
@@ -99,9 +100,9 @@ TEST_CASE("the y smoother is the exact minimiser of its chain", "[aico][topology
   }
 }
 
-TEST_CASE("bad topology input throws invalid_argument naming it", "[aico][topology][input]") {
+TEST_CASE("bad topological input throws invalid_argument naming it", "[aico][topological][input]") {
   const test::WrapScene scene;
-  TopologyOptions topo;
+  TopologicalOptions topo;
   topo.precision = 0.0;
   CHECK_THROWS_WITH(solve_topological<test::wrap_robot>(scene.base(), scene.windings(), scene.goal,
                                                         scene.home, wrap_options(), topo),

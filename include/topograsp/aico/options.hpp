@@ -1,16 +1,50 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
-/// AicoOptions: the parameters of an AICO solve, with their defaults.
+/// The parameters of an AICO solve: AicoMode (the state planned over), SweepMode (how often a
+/// sweep relinearises a step) and AicoOptions (every numeric parameter, with its default).
 #pragma once
 
-#include <topograsp/aico/sweep_mode.hpp>
+#include <array>
+#include <string_view>
+
+#include <topograsp/aico/detail/enum_names.hpp>
 
 namespace topograsp {
 
-/// The parameters of an AICO solve (aico.md). Every field has a usable default; AicoProblem's
-/// constructor checks them and throws topograsp::invalid_argument naming the first bad field.
+/// Which state AICO plans over (docs/aico.md, "The model").
+enum class AicoMode {
+  /// The state is x = (q, qdot) (2 nq) with the pseudo-dynamics x' = A x + B u + noise,
+  /// A = [[I, tau I], [0, I]], B = [[tau^2/2 I], [tau I]]: the paper's mode.
+  dynamic,
+  /// The state is x = q (nq) with the random-walk prior x' = x + noise of covariance H^-1.
+  kinematic,
+};
+
+/// How often a sweep relocates (moves the linearisation point and re-evaluates the tasks of) a
+/// time step before moving on to the next one.
+enum class SweepMode {
+  /// At most one relocation per step and pass (Toussaint's "symmetric" sweeps).
+  symmetric,
+  /// Up to AicoOptions::local_iterations relocations per step and pass, each followed by a new
+  /// belief: a few local Gauss-Newton steps on the step's marginal.
+  local_gauss_newton,
+};
+
+/// "dynamic" or "kinematic".
+[[nodiscard]] constexpr std::string_view to_string(AicoMode m) noexcept {
+  return detail::enum_name(m, std::array<std::string_view, 2>{"dynamic", "kinematic"});
+}
+
+/// "symmetric" or "local_gauss_newton".
+[[nodiscard]] constexpr std::string_view to_string(SweepMode m) noexcept {
+  return detail::enum_name(m, std::array<std::string_view, 2>{"symmetric", "local_gauss_newton"});
+}
+
+/// The parameters of an AICO solve (docs/aico.md, "Parameters"). Every field has a usable default;
+/// AicoProblem's constructor checks them and throws topograsp::invalid_argument naming the first
+/// bad field.
 ///
-/// The objective is
+/// The objective (1) is
 /// \f$\sum_{t<T} |x_{t+1} - A x_t|^2_W + \sum_{t \le T} |e_t(q_t)|^2\f$, where \f$e_t\f$ is the
 /// whitened task residual of the TaskStack and \f$W^{-1} = Q + B H^{-1} B'\f$ (dynamic mode) or
 /// \f$W = H\f$ (kinematic mode).

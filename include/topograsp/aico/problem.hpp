@@ -7,7 +7,6 @@
 #include <type_traits>
 #include <utility>
 
-#include <topograsp/aico/aico_mode.hpp>
 #include <topograsp/aico/detail/transition.hpp>
 #include <topograsp/aico/options.hpp>
 #include <topograsp/core/error.hpp>

@@ -1,16 +1,62 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
-/// AicoResult: the outcome of an AICO solve.
+/// The outcome of an AICO solve: AicoTermination (why it stopped, and the Status that maps to),
+/// AicoSweepRecord (what one sweep did) and AicoResult (the trajectory, costs and log).
 #pragma once
 
+#include <array>
+#include <string_view>
 #include <vector>
 
-#include <topograsp/aico/sweep_record.hpp>
-#include <topograsp/aico/termination.hpp>
+#include <topograsp/aico/detail/enum_names.hpp>
 #include <topograsp/core/eigen.hpp>
 #include <topograsp/core/status.hpp>
 
 namespace topograsp {
+
+/// Why an AICO solve stopped (docs/aico.md, "Sweeps, acceptance and termination").
+enum class AicoTermination {
+  step_tolerance,  ///< an accepted sweep moved no configuration by tolerance or more
+  cost_tolerance,  ///< an accepted sweep lowered the cost by less than cost_tolerance (relative)
+  max_sweeps,      ///< max_sweeps sweeps were run
+  max_rejections,  ///< max_rejections sweeps in a row raised the cost
+  non_finite,      ///< a task value, Jacobian or cost turned non-finite
+  factorisation,   ///< a belief or message matrix was not positive definite even when damped
+};
+
+/// A short lower-case name for \p t ("step_tolerance", ...).
+[[nodiscard]] constexpr std::string_view to_string(AicoTermination t) noexcept {
+  return detail::enum_name(
+      t, std::array<std::string_view, 6>{"step_tolerance", "cost_tolerance", "max_sweeps",
+                                         "max_rejections", "non_finite", "factorisation"});
+}
+
+/// The Status a termination reason maps to: success for the two tolerances, no_convergence when
+/// a budget ran out, numerical_issue for non-finite values or failed factorisations.
+[[nodiscard]] constexpr Status status_of(AicoTermination t) noexcept {
+  switch (t) {
+    case AicoTermination::step_tolerance:
+    case AicoTermination::cost_tolerance:
+      return Status::success;
+    case AicoTermination::max_sweeps:
+    case AicoTermination::max_rejections:
+      return Status::no_convergence;
+    case AicoTermination::non_finite:
+    case AicoTermination::factorisation:
+      return Status::numerical_issue;
+  }
+  return Status::numerical_issue;
+}
+
+/// What one AICO sweep did, for logs and plots.
+struct AicoSweepRecord {
+  double cost = 0.0;      ///< true cost of the sweep's trajectory (before acceptance)
+  double damping = 0.0;   ///< damping alpha the sweep ran with
+  double seconds = 0.0;   ///< wall time of the sweep including the cost evaluation (s)
+  double step = 0.0;      ///< largest change of a configuration against the accepted one (rad)
+  int relocations = 0;    ///< task re-evaluations during the sweep
+  bool accepted = false;  ///< whether the trajectory was kept
+};
 
 /// The outcome of an AICO solve for a robot with \p NQ joints. The trajectory is always the best
 /// one found (never worse than the initial one) and always finite.

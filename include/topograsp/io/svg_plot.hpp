@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include <topograsp/aico/sweep_record.hpp>
+#include <topograsp/aico/result.hpp>
 #include <topograsp/core/eigen.hpp>
 #include <topograsp/core/error.hpp>
 

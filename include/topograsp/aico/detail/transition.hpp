@@ -3,7 +3,7 @@
 /// The linear-Gaussian transition prior of AICO and its structured algebra (internal).
 #pragma once
 
-#include <topograsp/aico/aico_mode.hpp>
+#include <topograsp/aico/options.hpp>
 #include <topograsp/core/eigen.hpp>
 
 namespace topograsp::detail {
