@@ -42,6 +42,13 @@ inline void require_positive(double value, std::string_view argument) {
                                    "expected a finite number > 0, got " + std::to_string(value));
 }
 
+/// Throws topograsp::invalid_argument naming \p argument unless \p value is finite and >= 0.
+inline void require_non_negative(double value, std::string_view argument) {
+  if (!std::isfinite(value) || value < 0.0)
+    detail::throw_invalid_argument(argument,
+                                   "expected a finite number >= 0, got " + std::to_string(value));
+}
+
 /// Throws topograsp::invalid_argument naming \p argument unless every entry of \p m is finite.
 template <EigenDense D>
 void require_finite(const D& m, std::string_view argument) {
