@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Forward kinematics of all frames, and with the fingertip Jacobians, for the 20-DOF human hand and
 // the 14-DOF arm + SDH; side by side with Orocos KDL on the same trees when it is found.
+#include <limits>
 #include <random>
 #include <vector>
 
 #include <topograsp/kinematics.hpp>
 #include <topograsp/model/models.hpp>
 
+#include "support/random.hpp"
 #include "support/ratio_reporter.hpp"
 
 #ifdef TOPOGRASP_HAVE_KDL
@@ -21,16 +23,14 @@ namespace {
 using namespace topograsp;
 
 constexpr int k_samples = 64;
+constexpr double k_full_limits = std::numeric_limits<double>::infinity();
 
 // Configurations inside the limits, cycled through so nothing can be folded at compile time.
 template <const auto& M>
 std::vector<Vec<M.nq>> configurations() {
   std::mt19937_64 rng(1);
   std::vector<Vec<M.nq>> qs(k_samples);
-  for (auto& q : qs)
-    for (int i = 0; i < M.nq; ++i)
-      q[i] =
-          std::uniform_real_distribution<double>(M.joint_spec(i).lower, M.joint_spec(i).upper)(rng);
+  for (auto& q : qs) q = test::random_configuration<M>(rng, k_full_limits);
   return qs;
 }
 

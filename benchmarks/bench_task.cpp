@@ -13,6 +13,8 @@
 #include <topograsp/model/models.hpp>
 #include <topograsp/task.hpp>
 
+#include "support/objects.hpp"
+
 namespace {
 
 using namespace topograsp;
@@ -34,24 +36,8 @@ std::vector<Vec<M.nq>> configurations(std::size_t n, double closing) {
   return out;
 }
 
-Composite bottle(const Eigen::Isometry3d& pose) {
-  Eigen::Isometry3d body = Eigen::Isometry3d::Identity(), neck = body;
-  body.translation() = Vec3(0, 0, 0.08);
-  neck.translation() = Vec3(0, 0, 0.19);
-  return Composite({Primitive::cylinder(body, 0.035, 0.08),
-                    Primitive::sphere(Vec3(0, 0, 0.16), 0.03),
-                    Primitive::cylinder(neck, 0.013, 0.03)})
-      .transformed(pose);
-}
-
-Composite hammer(const Eigen::Isometry3d& pose) {
-  Eigen::Isometry3d handle = Eigen::Isometry3d::Identity(), head = handle;
-  handle.linear() = Eigen::AngleAxisd(pi / 2, Vec3::UnitY()).toRotationMatrix();
-  head.translation() = Vec3(0.16, 0, 0);
-  return Composite({Primitive::cylinder(handle, 0.015, 0.15),
-                    Primitive::box(head, Vec3(0.015, 0.06, 0.0125))})
-      .transformed(pose);
-}
+using test::bottle;
+using test::hammer;
 
 constexpr auto& k_hand = models::human_hand;
 constexpr auto& k_robot = models::schunk_arm_sdh;

@@ -43,7 +43,7 @@ options:
 )";
 
 struct Cli {
-  ExperimentConfig config;
+  ExperimentOptions experiment;
   std::filesystem::path out = "grasp_transfer_out";
   bool quiet = false;
   bool figures = false;
@@ -91,12 +91,12 @@ Cli parse(int argc, char** argv) {
     } else if (arg == "--out") {
       cli.out = value();
     } else if (arg == "--jobs") {
-      cli.config.jobs = parse_number<int>(value(), "--jobs");
-      if (cli.config.jobs < 1) throw std::invalid_argument("--jobs: expected at least 1");
+      cli.experiment.jobs = parse_number<int>(value(), "--jobs");
+      if (cli.experiment.jobs < 1) throw std::invalid_argument("--jobs: expected at least 1");
     } else if (arg == "--seed") {
-      cli.config.seed = parse_number<std::uint64_t>(value(), "--seed");
+      cli.experiment.seed = parse_number<std::uint64_t>(value(), "--seed");
     } else if (arg == "--max-hypotheses") {
-      cli.config.max_hypotheses = parse_number<int>(value(), "--max-hypotheses");
+      cli.experiment.max_hypotheses = parse_number<int>(value(), "--max-hypotheses");
     } else if (arg == "--shard") {
       const std::string s = value();
       const auto slash = s.find('/');
@@ -106,16 +106,16 @@ Cli parse(int argc, char** argv) {
       const int n = parse_number<int>(s.substr(slash + 1), "--shard");
       if (n < 1 || k < 1 || k > n)
         throw std::invalid_argument("--shard: expected 1 <= K <= N, got \"" + s + "\"");
-      cli.config.shard_index = k - 1;
-      cli.config.shard_count = n;
+      cli.experiment.shard_index = k - 1;
+      cli.experiment.shard_count = n;
     } else if (arg == "--winding-reference") {
-      cli.config.transfer.winding_reference = winding_reference(value());
+      cli.experiment.transfer.winding_reference = winding_reference(value());
     } else if (arg == "--set") {
       const std::string s = value();
       const auto eq = s.find('=');
       if (eq == std::string::npos)
         throw std::invalid_argument("--set: expected NAME=VALUE, got \"" + s + "\"");
-      set_transfer_parameter(cli.config.transfer, s.substr(0, eq),
+      set_transfer_parameter(cli.experiment.transfer, s.substr(0, eq),
                              parse_number<double>(s.substr(eq + 1), "--set"));
     } else if (arg == "--figures") {
       cli.figures = true;
@@ -130,9 +130,9 @@ Cli parse(int argc, char** argv) {
   for (const std::string& name : objects) {
     const auto o = objects::find(name);
     if (!o) throw std::invalid_argument("--objects: unknown object \"" + name + "\"");
-    cli.config.objects.push_back(*o);
+    cli.experiment.objects.push_back(*o);
   }
-  for (const std::string& name : methods) cli.config.methods.push_back(transfer_method(name));
+  for (const std::string& name : methods) cli.experiment.methods.push_back(transfer_method(name));
   return cli;
 }
 
@@ -161,7 +161,7 @@ std::string percent(const MethodSummary* m) {
 }
 
 // The paper's Table I next to ours, one column per object.
-void print_table(const ExperimentConfig& config, const std::vector<ObjectResult>& results) {
+void print_table(const ExperimentOptions& experiment, const std::vector<ObjectResult>& results) {
   const auto find = [&](const ObjectResult& r, TransferMethod m) -> const MethodSummary* {
     for (const MethodSummary& s : r.methods)
       if (s.method == m) return &s;
@@ -190,7 +190,7 @@ void print_table(const ExperimentConfig& config, const std::vector<ObjectResult>
   row("Total number of grasps", 0,
       [](const ObjectResult& r) { return std::to_string(r.hypotheses); });
   row("Stable grasps", 1, [](const ObjectResult& r) { return std::to_string(r.stable_human()); });
-  for (const TransferMethod m : config.methods) {
+  for (const TransferMethod m : experiment.methods) {
     const int paper_row = m == TransferMethod::transplant    ? 2
                           : m == TransferMethod::topological ? 3
                                                              : -1;
@@ -210,7 +210,7 @@ int main(int argc, char** argv) {
     const auto t0 = std::chrono::steady_clock::now();
     ProgressFn progress;
     if (!cli.quiet) progress = [](std::string_view line) { std::cerr << line << '\n'; };
-    const std::vector<ObjectResult> results = run_experiment(cli.config, progress);
+    const std::vector<ObjectResult> results = run_experiment(cli.experiment, progress);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     // Scenes of every tested grasp, then results.json.
@@ -219,20 +219,20 @@ int main(int argc, char** argv) {
         if (g.reached)
           write_text(cli.out / scene_path(r.object.name, g.id, "human"),
                      grasp_mjcf<models::human_hand>(r.object, g.hand_pose, g.q, g.object_pose,
-                                                    cli.config.transfer));
+                                                    cli.experiment.transfer));
       for (std::size_t m = 0; m < r.transfers.size(); ++m)
         for (std::size_t k = 0; k < r.transfers[m].size(); ++k) {
           const RobotGrasp& t = r.transfers[m][k];
           if (!t.planned) continue;
-          write_text(cli.out / scene_path(r.object.name, r.transferred_ids[k], t.method),
+          write_text(cli.out / scene_path(r.object.name, r.transferred_ids[k], to_string(t.method)),
                      grasp_mjcf<models::schunk_sdh>(r.object, t.hand_pose, t.q_closed,
-                                                    t.object_pose, cli.config.transfer));
+                                                    t.object_pose, cli.experiment.transfer));
         }
     }
-    write_text(cli.out / "results.json", results_json(cli.config, results).dump(2) + "\n");
+    write_text(cli.out / "results.json", results_json(cli.experiment, results).dump(2) + "\n");
     if (cli.figures) (void)write_report(cli.out, results);
-    print_table(cli.config, results);
-    std::printf("\n%.1f s with %d job(s); results in %s%s\n", seconds, cli.config.jobs,
+    print_table(cli.experiment, results);
+    std::printf("\n%.1f s with %d job(s); results in %s%s\n", seconds, cli.experiment.jobs,
                 (cli.out / "results.json").string().c_str(),
                 cli.figures ? (", figures in " + (cli.out / "index.html").string()).c_str() : "");
     return 0;

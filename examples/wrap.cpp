@@ -4,8 +4,6 @@
 // with AICO in dynamic mode. Prints the sweeps, writes the windings over time as CSV and SVG.
 //
 //   wrap [--out DIR] [--steps T] [--mode direct|coupled] [--goal W1,W2]
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -16,6 +14,9 @@
 #include <topograsp/io/svg_plot.hpp>
 #include <topograsp/model/models.hpp>
 #include <topograsp/task/collision_task.hpp>
+#include <topograsp/task/joint_limit_task.hpp>
+#include <topograsp/task/posture_task.hpp>
+#include <topograsp/task/task_set.hpp>
 #include <topograsp/task/winding_task.hpp>
 
 namespace {
@@ -23,35 +24,6 @@ namespace {
 using namespace topograsp;
 constexpr const auto& robot = models::schunk_arm_sdh;
 constexpr int nq = robot.nq;
-
-// The other tasks: collision with the cylinder (target 0), a hinge on the joint limits and a weak
-// pull toward the home posture. Rows: 1 + nq + nq, reported as three tasks.
-struct BaseTasks {
-  using Kinematics = KinematicsData<robot>;
-  static constexpr int dim = 1 + 2 * nq;
-  static constexpr std::array<int, 3> task_dims{1, nq, nq};
-  CollisionTask<robot> collision;
-  Vec<nq> posture;
-  double rho_collision = 1e3, rho_limits = 1e4, rho_posture = 1e-2;
-
-  void residual(const Kinematics& d, int, int, Vec<dim>& e, Mat<dim, nq>& J) const noexcept {
-    Vec<1> phi;
-    Mat<1, nq> Jc;
-    collision.evaluate(d, phi, Jc);
-    e[0] = std::sqrt(rho_collision) * phi[0];
-    J.row(0) = std::sqrt(rho_collision) * Jc;
-    static const Vec<nq> lo = lower_limits<robot>(), hi = upper_limits<robot>();
-    const double sl = std::sqrt(rho_limits), sp = std::sqrt(rho_posture);
-    J.block<nq, nq>(1, 0).setZero();
-    for (int i = 0; i < nq; ++i) {
-      const double over = std::max(0.0, d.q[i] - hi[i]) + std::min(0.0, d.q[i] - lo[i]);
-      e[1 + i] = sl * over;
-      J(1 + i, i) = over != 0.0 ? sl : 0.0;
-    }
-    e.tail<nq>() = sp * (d.q - posture);
-    J.bottomRows<nq>() = sp * Mat<nq, nq>::Identity();
-  }
-};
 
 int usage(const char* argv0, int status) {
   std::fprintf(status == 0 ? stdout : stderr,
@@ -110,7 +82,14 @@ int main(int argc, char** argv) {
   pose.translation() = centre;
   pose.linear() << R.col(0), R.col(1).cross(R.col(0)), R.col(1);
   const Composite cylinder({Primitive::cylinder(pose, 0.02, 0.1)});
-  const BaseTasks base{CollisionTask<robot>(cylinder, 0.02), home};
+  // The other tasks: collision with the cylinder (target 0), a penalty beyond the joint limits
+  // and a weak pull toward the home posture, each with a constant precision.
+  const CollisionTask<robot> collision(cylinder, 0.02);
+  const auto base = make_task_set(
+      scheduled(collision, constant_target(Vec<1>(0.0)), constant_precision(1e3)),
+      scheduled(JointLimitTask<robot>(), constant_target(Vec<nq>(Vec<nq>::Zero())),
+                constant_precision(1e4)),
+      scheduled(PostureTask<robot>(), constant_target(home), constant_precision(1e-2)));
   const WindingTask<robot, 2> windings({0, 1}, centre);
 
   try {
@@ -129,7 +108,7 @@ int main(int argc, char** argv) {
         "%s (%s) after %d sweeps, %d rounds; final windings (%.4f, %.4f); "
         "closest distance to the cylinder %.4f m\n",
         to_string(r.aico.status).data(), to_string(r.aico.termination).data(), r.aico.sweeps,
-        r.rounds, w[0], w[1], base.collision.min_distance(d));
+        r.rounds, w[0], w[1], collision.min_distance(d));
 
     std::filesystem::create_directories(out);
     std::ofstream csv(out + "/windings.csv");

@@ -1,16 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The wrap scene of examples/wrap.cpp for the tests: the SDH on the 7-DOF arm, a cylinder in
-// front of it, collision, joint limits and a weak posture term as the base tasks.
+// front of it, collision, joint limits and a weak posture term (the library's tasks) as the base.
 #pragma once
 
-#include <algorithm>
 #include <array>
-#include <cmath>
 
 #include <topograsp/geometry/composite.hpp>
 #include <topograsp/kinematics.hpp>
 #include <topograsp/model/models.hpp>
 #include <topograsp/task/collision_task.hpp>
+#include <topograsp/task/joint_limit_task.hpp>
+#include <topograsp/task/posture_task.hpp>
+#include <topograsp/task/task_set.hpp>
 #include <topograsp/task/winding_task.hpp>
 
 namespace topograsp::test {
@@ -18,36 +19,28 @@ namespace topograsp::test {
 inline constexpr const auto& wrap_robot = models::schunk_arm_sdh;
 constexpr int wrap_nq = wrap_robot.nq;
 
-/// Collision with the object (target 0), a hinge on the joint limits and a weak posture term.
-struct WrapBase {
-  using Kinematics = KinematicsData<wrap_robot>;
-  static constexpr int dim = 1 + 2 * wrap_nq;
+/// The library's tasks the wrap scene (and examples/wrap.cpp) plans with besides the windings.
+using WrapBaseSet =
+    TaskSet<CollisionTask<wrap_robot>, JointLimitTask<wrap_robot>, PostureTask<wrap_robot>>;
+
+/// Collision with the object (target 0, precision 1e3), the joint limits (target 0, 1e4) and a
+/// weak pull toward the posture (1e-2), constant over the plan; AICO reports their costs as three
+/// tasks. The collision task is also kept by name, to measure distances.
+struct WrapBase : WrapBaseSet {
   static constexpr std::array<int, 3> task_dims{1, wrap_nq, wrap_nq};
   CollisionTask<wrap_robot> collision;
-  Vec<wrap_nq> posture = Vec<wrap_nq>::Zero();
-  double rho_collision = 1e3, rho_limits = 1e4, rho_posture = 1e-2;
 
-  void residual(const Kinematics& d, int, int, Vec<dim>& e, Mat<dim, wrap_nq>& J) const noexcept {
-    Vec<1> phi;
-    Mat<1, wrap_nq> Jc;
-    collision.evaluate(d, phi, Jc);
-    const double sc = std::sqrt(rho_collision), sl = std::sqrt(rho_limits);
-    e[0] = sc * phi[0];
-    J.row(0) = sc * Jc;
-    static const Vec<wrap_nq> lo = lower_limits<wrap_robot>(), hi = upper_limits<wrap_robot>();
-    J.block<wrap_nq, wrap_nq>(1, 0).setZero();
-    for (int i = 0; i < wrap_nq; ++i) {
-      const double over = std::max(0.0, d.q[i] - hi[i]) + std::min(0.0, d.q[i] - lo[i]);
-      e[1 + i] = sl * over;
-      J(1 + i, i) = over != 0.0 ? sl : 0.0;
-    }
-    const double sp = std::sqrt(rho_posture);
-    e.tail<wrap_nq>() = sp * (d.q - posture);
-    J.bottomRows<wrap_nq>() = sp * Mat<wrap_nq, wrap_nq>::Identity();
-  }
+  WrapBase(const CollisionTask<wrap_robot>& collision_task, const Vec<wrap_nq>& posture)
+      : WrapBaseSet(
+            scheduled(collision_task, constant_target(Vec<1>(0.0)), constant_precision(1e3)),
+            scheduled(JointLimitTask<wrap_robot>(),
+                      constant_target(Vec<wrap_nq>(Vec<wrap_nq>::Zero())), constant_precision(1e4)),
+            scheduled(PostureTask<wrap_robot>(), constant_target(posture),
+                      constant_precision(1e-2))),
+        collision(collision_task) {}
 };
 
-/// The scene: a cylinder (radius 3 cm, 20 cm long) 7 cm in front of the palm at a reachable arm
+/// The scene: a cylinder (radius 2 cm, 20 cm long) 10 cm in front of the palm at a reachable arm
 /// pose, its axis across the fingers' flexion plane; the winding centre is the cylinder's centre.
 struct WrapScene {
   static constexpr double k_offset = 0.10, k_radius = 0.02;

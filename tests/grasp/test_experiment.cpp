@@ -12,8 +12,8 @@ using namespace topograsp;
 
 namespace {
 
-ExperimentConfig small_config(int jobs) {
-  ExperimentConfig c;
+ExperimentOptions small_options(int jobs) {
+  ExperimentOptions c;
   c.objects = {objects::hammer(), objects::bottle()};
   c.methods = {TransferMethod::topological, TransferMethod::transplant, TransferMethod::fingertip};
   c.jobs = jobs;
@@ -29,7 +29,7 @@ bool is_integer(const Json& j) {
 }  // namespace
 
 TEST_CASE("a small experiment: counts, schema and determinism", "[grasp][experiment]") {
-  const ExperimentConfig config = small_config(2);
+  const ExperimentOptions config = small_options(2);
   const std::vector<ObjectResult> results = run_experiment(config);
   REQUIRE(results.size() == 2);
   for (const ObjectResult& r : results) {
@@ -89,7 +89,7 @@ TEST_CASE("a small experiment: counts, schema and determinism", "[grasp][experim
   }
 
   SECTION("same seed, same results, whatever the number of threads") {
-    ExperimentConfig one = small_config(1);
+    ExperimentOptions one = small_options(1);
     const std::vector<ObjectResult> again = run_experiment(one);
     one.jobs = 2;  // the config records jobs; compare everything else
     Json a = results_json(one, again), b = results_json(config, results);
@@ -183,16 +183,16 @@ TEST_CASE("the windings can be taken around the point nearest the human's grasp"
 TEST_CASE("bad experiment input is rejected by name", "[grasp][bad-input]") {
   CHECK_THROWS_WITH(transfer_method("teleport"), Catch::Contains("method"));
   CHECK(transfer_method("fingertip") == TransferMethod::fingertip);
-  ExperimentConfig c = small_config(0);
+  ExperimentOptions c = small_options(0);
   CHECK_THROWS_WITH(run_experiment(c), Catch::Contains("jobs"));
-  c = small_config(1);
+  c = small_options(1);
   c.shard_index = 3;
   c.shard_count = 3;
   CHECK_THROWS_WITH(run_experiment(c), Catch::Contains("shard"));
-  c = small_config(1);
+  c = small_options(1);
   c.objects.clear();
   CHECK_THROWS_WITH(run_experiment(c), Catch::Contains("objects"));
-  c = small_config(1);
+  c = small_options(1);
   c.objects[0].mass = -1.0;
   CHECK_THROWS_WITH(run_experiment(c), Catch::Contains("hammer.mass"));
 }
@@ -209,7 +209,7 @@ TEST_CASE("transfer parameters are set and recorded by name", "[grasp][bad-input
   CHECK_THROWS_WITH(set_transfer_parameter(o, "backoff", std::nan("")), Catch::StartsWith("value"));
   CHECK(o.backoff == TransferOptions{}.backoff);  // unchanged by the rejected calls
   // results.json records every parameter under config.transfer.
-  ExperimentConfig c = small_config(1);
+  ExperimentOptions c = small_options(1);
   c.transfer = o;
   const Json doc = results_json(c, {});
   const Json& t = doc.at("config").at("transfer");
@@ -220,7 +220,7 @@ TEST_CASE("transfer parameters are set and recorded by name", "[grasp][bad-input
 }
 
 TEST_CASE("shards split the hypotheses without overlap", "[grasp][experiment]") {
-  ExperimentConfig c = small_config(1);
+  ExperimentOptions c = small_options(1);
   c.objects = {objects::can()};
   c.methods = {TransferMethod::transplant};
   int total = 0;

@@ -11,15 +11,13 @@
 #include <topograsp/io/svg_scene.hpp>
 #include <vector>
 
+#include "support/text.hpp"
+
 using namespace topograsp;
 
 namespace {
 
-std::size_t count(const std::string& s, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = s.find(what); at != std::string::npos; at = s.find(what, at + 1)) ++n;
-  return n;
-}
+using test::count;
 
 HtmlPage sample_page() {
   HtmlPage page;

@@ -10,15 +10,13 @@
 #include <topograsp/model/models.hpp>
 #include <vector>
 
+#include "support/text.hpp"
+
 using namespace topograsp;
 
 namespace {
 
-std::size_t count(const std::string& s, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = s.find(what); at != std::string::npos; at = s.find(what, at + 1)) ++n;
-  return n;
-}
+using test::count;
 
 struct Box2 {
   double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;

@@ -4,11 +4,14 @@
 
 #include <catch2/catch.hpp>
 
+#include <topograsp/kinematics.hpp>
+#include <topograsp/model/models.hpp>
 #include <topograsp/task/hand_curve.hpp>
 #include <topograsp/task/linking.hpp>
 #include <topograsp/task/writhe_task.hpp>
 
-#include "task/support.hpp"
+#include "support/finite_diff.hpp"
+#include "support/random.hpp"
 
 using namespace topograsp;
 

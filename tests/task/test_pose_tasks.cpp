@@ -3,6 +3,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <topograsp/kinematics.hpp>
+#include <topograsp/model/models.hpp>
 #include <topograsp/task/axis_task.hpp>
 #include <topograsp/task/joint_limit_task.hpp>
 #include <topograsp/task/line_task.hpp>
@@ -10,7 +12,8 @@
 #include <topograsp/task/position_task.hpp>
 #include <topograsp/task/posture_task.hpp>
 
-#include "task/support.hpp"
+#include "support/finite_diff.hpp"
+#include "support/random.hpp"
 
 using namespace topograsp;
 

@@ -3,10 +3,13 @@
 
 #include <catch2/catch.hpp>
 
+#include <topograsp/kinematics.hpp>
+#include <topograsp/model/models.hpp>
 #include <topograsp/task.hpp>
 
-#include "task/objects.hpp"
-#include "task/support.hpp"
+#include "support/finite_diff.hpp"
+#include "support/objects.hpp"
+#include "support/random.hpp"
 
 using namespace topograsp;
 

@@ -101,11 +101,6 @@ class AicoProblem {
       detail::throw_invalid_argument("options.local_iterations", "expected >= 1");
     require_non_negative(o.terminal_precision, "options.terminal_precision");
   }
-  static void require_non_negative(double v, std::string_view name) {
-    if (!std::isfinite(v) || v < 0.0)
-      detail::throw_invalid_argument(name,
-                                     "expected a finite number >= 0, got " + std::to_string(v));
-  }
 
   Stack stack_;
   AicoOptions options_;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -30,6 +31,25 @@ namespace detail {
 
 }  // namespace detail
 
+/// The value of \p values whose to_string() is \p name. Throws topograsp::invalid_argument naming
+/// \p argument otherwise, with the message 'unknown <noun> "<name>" (expected a, b or c)'. The one
+/// parser of the library's named enums (each has a constexpr to_string() beside it).
+template <class Enum>
+[[nodiscard]] Enum enum_from_name(std::string_view name, std::initializer_list<Enum> values,
+                                  std::string_view argument, std::string_view noun) {
+  std::string expected;
+  std::size_t i = 0;
+  for (const Enum e : values) {
+    if (to_string(e) == name) return e;
+    expected += i == 0 ? "" : (i + 1 == values.size() ? " or " : ", ");
+    expected += to_string(e);
+    ++i;
+  }
+  detail::throw_invalid_argument(argument, "unknown " + std::string(noun) + " \"" +
+                                               std::string(name) + "\" (expected " + expected +
+                                               ")");
+}
+
 /// Throws topograsp::invalid_argument naming \p argument unless \p value is finite.
 inline void require_finite(double value, std::string_view argument) {
   if (!std::isfinite(value)) detail::throw_invalid_argument(argument, "expected a finite number");
@@ -40,6 +60,13 @@ inline void require_positive(double value, std::string_view argument) {
   if (!std::isfinite(value) || !(value > 0.0))
     detail::throw_invalid_argument(argument,
                                    "expected a finite number > 0, got " + std::to_string(value));
+}
+
+/// Throws topograsp::invalid_argument naming \p argument unless \p value is finite and >= 0.
+inline void require_non_negative(double value, std::string_view argument) {
+  if (!std::isfinite(value) || value < 0.0)
+    detail::throw_invalid_argument(argument,
+                                   "expected a finite number >= 0, got " + std::to_string(value));
 }
 
 /// Throws topograsp::invalid_argument naming \p argument unless every entry of \p m is finite.

@@ -20,48 +20,8 @@
 
 namespace topograsp {
 
-/// The transfer methods by name.
-enum class TransferMethod : std::uint8_t { topological, transplant, fingertip };
-
-/// The name of \p m ("topological", "transplant", "fingertip").
-[[nodiscard]] constexpr std::string_view to_string(TransferMethod m) noexcept {
-  switch (m) {
-    case TransferMethod::topological:
-      return "topological";
-    case TransferMethod::transplant:
-      return "transplant";
-    case TransferMethod::fingertip:
-      return "fingertip";
-  }
-  return "unknown";
-}
-
-/// The method called \p name; throws topograsp::invalid_argument naming "method" otherwise.
-[[nodiscard]] inline TransferMethod transfer_method(std::string_view name) {
-  for (const TransferMethod m :
-       {TransferMethod::topological, TransferMethod::transplant, TransferMethod::fingertip})
-    if (to_string(m) == name) return m;
-  detail::throw_invalid_argument("method",
-                                 "unknown method \"" + std::string(name) +
-                                     "\" (expected topological, transplant or fingertip)");
-}
-
-/// Runs \p method on the human grasp \p g.
-[[nodiscard]] inline RobotGrasp transfer(TransferMethod method, const GraspObject& object,
-                                         const HumanGrasp& g, const TransferOptions& options) {
-  switch (method) {
-    case TransferMethod::topological:
-      return transfer_topological(object, g, options);
-    case TransferMethod::transplant:
-      return transfer_transplant(object, g, options);
-    case TransferMethod::fingertip:
-      return transfer_fingertip(object, g, options);
-  }
-  return {};
-}
-
 /// What to run.
-struct ExperimentConfig {
+struct ExperimentOptions {
   std::vector<GraspObject> objects;     ///< default: the paper's hammer and bottle
   std::vector<TransferMethod> methods;  ///< default: all three
   int jobs = 1;                         ///< worker threads (>= 1)
@@ -87,7 +47,7 @@ struct ObjectResult {
   GraspObject object;
   int hypotheses = 0;                              ///< hypotheses run (after sharding)
   std::vector<HumanGrasp> human;                   ///< every demonstration, in id order
-  std::vector<MethodSummary> methods;              ///< in config order
+  std::vector<MethodSummary> methods;              ///< in options.methods order
   std::vector<std::vector<RobotGrasp>> transfers;  ///< [method][k]: the k-th stable human grasp
   std::vector<int> transferred_ids;                ///< the human grasp id of each k
   [[nodiscard]] int stable_human() const noexcept {
@@ -135,17 +95,18 @@ inline void parallel_for(int n, int jobs, const std::function<void(int)>& body) 
 /// worker threads, one call at a time.
 using ProgressFn = std::function<void(std::string_view)>;
 
-/// Runs the experiment. Throws topograsp::invalid_argument naming the field for jobs < 1, a bad
-/// shard, an empty object or method list, or an invalid object. Results are identical for equal
-/// configs whatever the number of jobs.
-[[nodiscard]] inline std::vector<ObjectResult> run_experiment(const ExperimentConfig& config,
+/// Runs the experiment described by \p options. Throws topograsp::invalid_argument naming the field
+/// for jobs < 1, a bad shard, an empty object or method list, or an invalid object. Results are
+/// identical for equal options whatever the number of jobs.
+[[nodiscard]] inline std::vector<ObjectResult> run_experiment(const ExperimentOptions& options,
                                                               const ProgressFn& progress = {}) {
-  if (config.jobs < 1) detail::throw_invalid_argument("jobs", "expected at least 1");
-  if (config.shard_count < 1 || config.shard_index < 0 || config.shard_index >= config.shard_count)
+  if (options.jobs < 1) detail::throw_invalid_argument("jobs", "expected at least 1");
+  if (options.shard_count < 1 || options.shard_index < 0 ||
+      options.shard_index >= options.shard_count)
     detail::throw_invalid_argument("shard", "expected 0 <= index < count");
-  if (config.objects.empty()) detail::throw_invalid_argument("objects", "expected at least one");
-  if (config.methods.empty()) detail::throw_invalid_argument("methods", "expected at least one");
-  for (const GraspObject& o : config.objects) o.validate();
+  if (options.objects.empty()) detail::throw_invalid_argument("objects", "expected at least one");
+  if (options.methods.empty()) detail::throw_invalid_argument("methods", "expected at least one");
+  for (const GraspObject& o : options.objects) o.validate();
   std::mutex progress_mutex;
   const auto say = [&](const std::string& line) {
     if (!progress) return;
@@ -153,22 +114,22 @@ using ProgressFn = std::function<void(std::string_view)>;
     progress(line);
   };
   std::vector<ObjectResult> results;
-  for (std::size_t oi = 0; oi < config.objects.size(); ++oi) {
+  for (std::size_t oi = 0; oi < options.objects.size(); ++oi) {
     ObjectResult res;
-    res.object = config.objects[oi];
+    res.object = options.objects[oi];
     std::vector<GraspHypothesis> hyps = box_hypotheses(res.object);
     std::vector<int> ids;
     for (int i = 0; i < static_cast<int>(hyps.size()); ++i)
-      if (i % config.shard_count == config.shard_index &&
-          (config.max_hypotheses <= 0 || i < config.max_hypotheses))
+      if (i % options.shard_count == options.shard_index &&
+          (options.max_hypotheses <= 0 || i < options.max_hypotheses))
         ids.push_back(i);
     res.hypotheses = static_cast<int>(ids.size());
     res.human.resize(ids.size());
     std::atomic<int> done{0};
-    detail::parallel_for(static_cast<int>(ids.size()), config.jobs, [&](int k) {
-      GraspSimOptions sim = config.transfer.sim;
+    detail::parallel_for(static_cast<int>(ids.size()), options.jobs, [&](int k) {
+      GraspSimOptions sim = options.transfer.sim;
       const int id = ids[static_cast<std::size_t>(k)];
-      sim.shake.seed = grasp_seed(config.seed, oi, id, -1);
+      sim.shake.seed = grasp_seed(options.seed, oi, id, -1);
       res.human[static_cast<std::size_t>(k)] =
           demonstrate(res.object, hyps[static_cast<std::size_t>(id)], id, sim);
       say("[" + res.object.name + "] human demonstrations " + std::to_string(++done) + "/" +
@@ -179,24 +140,24 @@ using ProgressFn = std::function<void(std::string_view)>;
     std::vector<const HumanGrasp*> stable;
     for (const HumanGrasp& g : res.human)
       if (g.stable()) stable.push_back(&g);
-    const std::size_t nm = config.methods.size();
+    const std::size_t nm = options.methods.size();
     res.transfers.assign(nm, std::vector<RobotGrasp>(stable.size()));
     done = 0;
     const int total = static_cast<int>(nm * stable.size());
-    detail::parallel_for(total, config.jobs, [&](int k) {
+    detail::parallel_for(total, options.jobs, [&](int k) {
       const std::size_t m = static_cast<std::size_t>(k) / std::max<std::size_t>(stable.size(), 1);
       const std::size_t s = static_cast<std::size_t>(k) % std::max<std::size_t>(stable.size(), 1);
-      TransferOptions options = config.transfer;
+      TransferOptions transfer_options = options.transfer;
       const HumanGrasp& g = *stable[s];
-      options.sim.shake.seed =
-          grasp_seed(config.seed, oi, g.id, static_cast<int>(config.methods[m]));
-      res.transfers[m][s] = transfer(config.methods[m], res.object, g, options);
+      transfer_options.sim.shake.seed =
+          grasp_seed(options.seed, oi, g.id, static_cast<int>(options.methods[m]));
+      res.transfers[m][s] = transfer(options.methods[m], res.object, g, transfer_options);
       say("[" + res.object.name + "] transfers " + std::to_string(++done) + "/" +
           std::to_string(total));
     });
     for (std::size_t m = 0; m < nm; ++m) {
       MethodSummary summary;
-      summary.method = config.methods[m];
+      summary.method = options.methods[m];
       summary.tested = static_cast<int>(stable.size());
       for (const RobotGrasp& r : res.transfers[m]) summary.stable += r.stable() ? 1 : 0;
       res.methods.push_back(summary);

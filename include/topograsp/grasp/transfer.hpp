@@ -38,18 +38,44 @@ enum class WindingReference : std::uint8_t {
 
 /// The name of \p r ("centre_of_mass", "nearest_point").
 [[nodiscard]] constexpr std::string_view to_string(WindingReference r) noexcept {
-  return r == WindingReference::nearest_point ? "nearest_point" : "centre_of_mass";
+  switch (r) {
+    case WindingReference::centre_of_mass:
+      return "centre_of_mass";
+    case WindingReference::nearest_point:
+      return "nearest_point";
+  }
+  return "unknown";
 }
 
 /// The reference called \p name ("centre_of_mass" or "nearest_point").
 /// \throws topograsp::invalid_argument naming "winding_reference" for any other name.
 [[nodiscard]] inline WindingReference winding_reference(std::string_view name) {
-  for (const WindingReference r :
-       {WindingReference::centre_of_mass, WindingReference::nearest_point})
-    if (to_string(r) == name) return r;
-  detail::throw_invalid_argument(
-      "winding_reference",
-      "unknown reference \"" + std::string(name) + "\" (expected centre_of_mass or nearest_point)");
+  return enum_from_name(name, {WindingReference::centre_of_mass, WindingReference::nearest_point},
+                        "winding_reference", "reference");
+}
+
+/// The transfer methods.
+enum class TransferMethod : std::uint8_t { topological, transplant, fingertip };
+
+/// The name of \p m ("topological", "transplant", "fingertip").
+[[nodiscard]] constexpr std::string_view to_string(TransferMethod m) noexcept {
+  switch (m) {
+    case TransferMethod::topological:
+      return "topological";
+    case TransferMethod::transplant:
+      return "transplant";
+    case TransferMethod::fingertip:
+      return "fingertip";
+  }
+  return "unknown";
+}
+
+/// The method called \p name ("topological", "transplant" or "fingertip").
+/// \throws topograsp::invalid_argument naming "method" for any other name.
+[[nodiscard]] inline TransferMethod transfer_method(std::string_view name) {
+  return enum_from_name(
+      name, {TransferMethod::topological, TransferMethod::transplant, TransferMethod::fingertip},
+      "method", "method");
 }
 
 /// The parameters of the transfer methods; every field has a default used by grasp_transfer.
@@ -138,7 +164,7 @@ inline void set_transfer_parameter(TransferOptions& options, std::string_view na
 
 /// A transferred grasp: where the SDH ended (object frame), how it was planned, the shake test.
 struct RobotGrasp {
-  std::string method;
+  TransferMethod method = TransferMethod::topological;
   bool planned = false;  ///< the method produced a hand pose (else not simulated)
   std::string reason;    ///< why not planned, or the planner's termination
   Eigen::Isometry3d hand_pose = Eigen::Isometry3d::Identity();  ///< SDH palm, object frame
@@ -287,7 +313,7 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
                                                     const TransferOptions& options = {}) {
   const auto t0 = detail::Clock::now();
   RobotGrasp r;
-  r.method = "transplant";
+  r.method = TransferMethod::transplant;
   const Eigen::Isometry3d target = detail::sdh_grasp_target(g);
   const auto root = place_at_contact(object, detail::sdh_root_for_grasp_centre(target),
                                      options.sdh_preshape, target.linear().col(2), options.sim);
@@ -311,7 +337,7 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
                                                    const TransferOptions& options = {}) {
   const auto t0 = detail::Clock::now();
   RobotGrasp r;
-  r.method = "fingertip";
+  r.method = TransferMethod::fingertip;
   constexpr auto& f = models::schunk_sdh_free;
   constexpr auto& h = models::human_hand;
   KinematicsData<h> hd;
@@ -456,7 +482,7 @@ using TopologicalTaskSet =
   const auto t0 = detail::Clock::now();
   constexpr auto& M = models::schunk_arm_sdh;
   RobotGrasp r;
-  r.method = "topological";
+  r.method = TransferMethod::topological;
   Vec<14> q0;
   q0 << options.arm_ready, options.sdh_preshape;
   KinematicsData<M> d;
@@ -502,6 +528,20 @@ using TopologicalTaskSet =
   if (options.winding_reference != WindingReference::centre_of_mass)
     r.winding = detail::sdh_windings(reference, *cleared, r.q_closed);
   return r;
+}
+
+/// Runs \p method on the human grasp \p g.
+[[nodiscard]] inline RobotGrasp transfer(TransferMethod method, const GraspObject& object,
+                                         const HumanGrasp& g, const TransferOptions& options) {
+  switch (method) {
+    case TransferMethod::topological:
+      return transfer_topological(object, g, options);
+    case TransferMethod::transplant:
+      return transfer_transplant(object, g, options);
+    case TransferMethod::fingertip:
+      return transfer_fingertip(object, g, options);
+  }
+  return {};
 }
 
 }  // namespace topograsp

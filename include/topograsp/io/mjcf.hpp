@@ -14,15 +14,15 @@
 
 namespace topograsp {
 
-namespace mjcf_detail {
+namespace detail {
 
-inline void write_pose(std::ostream& os, const Eigen::Isometry3d& T) {
+inline void write_mjcf_pose(std::ostream& os, const Eigen::Isometry3d& T) {
   const Eigen::Quaterniond q(T.linear());
   os << " pos=\"" << T.translation().x() << ' ' << T.translation().y() << ' ' << T.translation().z()
      << "\" quat=\"" << q.w() << ' ' << q.x() << ' ' << q.y() << ' ' << q.z() << '"';
 }
 
-inline std::string_view geom_type(ShapeType t) {
+inline std::string_view mjcf_geom_type(ShapeType t) {
   switch (t) {
     case ShapeType::sphere:
       return "sphere";
@@ -37,9 +37,10 @@ inline std::string_view geom_type(ShapeType t) {
 }
 
 // One geom: the shape at `T` (in the enclosing body's frame).
-inline void write_geom(std::ostream& os, std::string_view indent, const std::string& name,
-                       const ShapeSpec& s, const Eigen::Isometry3d& T, double mu, double torsion) {
-  os << indent << "<geom name=\"" << name << "\" type=\"" << geom_type(s.type) << "\" size=\"";
+inline void write_mjcf_geom(std::ostream& os, std::string_view indent, const std::string& name,
+                            const ShapeSpec& s, const Eigen::Isometry3d& T, double mu,
+                            double torsion) {
+  os << indent << "<geom name=\"" << name << "\" type=\"" << mjcf_geom_type(s.type) << "\" size=\"";
   switch (s.type) {
     case ShapeType::sphere:
       os << s.size[0];
@@ -53,12 +54,12 @@ inline void write_geom(std::ostream& os, std::string_view indent, const std::str
       break;
   }
   os << '"';
-  write_pose(os, T);
+  write_mjcf_pose(os, T);
   os << " friction=\"" << mu << ' ' << mu * torsion << " 0.0001\" condim=\""
      << (torsion > 0.0 ? 4 : 3) << "\"/>\n";
 }
 
-}  // namespace mjcf_detail
+}  // namespace detail
 
 /// Writes \p world as an MJCF model that MuJoCo 2.2 loads: fixed bodies as geoms of the world
 /// body; every kinematic body's shapes as geoms of one body named "hand" with mocap="true",
@@ -72,7 +73,6 @@ inline void write_geom(std::ostream& os, std::string_view indent, const std::str
 template <class S>
 void write_mjcf(std::ostream& os, const World<S>& world, const Eigen::Isometry3d& hand_frame,
                 std::string_view model_name = "topograsp_scene") {
-  using mjcf_detail::write_geom;
   const auto flags = os.flags();
   const auto precision = os.precision();
   os << std::setprecision(12);  // 1e-12 relative: far below any tolerance of a simulation
@@ -91,20 +91,21 @@ void write_mjcf(std::ostream& os, const World<S>& world, const Eigen::Isometry3d
     const RigidBody<S>& body = world.body(b);
     if (body.type != BodyType::fixed) continue;
     for (int c = body.first_collider; c < body.first_collider + body.n_colliders; ++c)
-      write_geom(os, "    ", "fixed_" + std::to_string(c), world.collider(c).spec,
-                 shape_pose(world.collider(c)), static_cast<double>(body.friction), 0.0);
+      detail::write_mjcf_geom(os, "    ", "fixed_" + std::to_string(c), world.collider(c).spec,
+                              shape_pose(world.collider(c)), static_cast<double>(body.friction),
+                              0.0);
   }
   os << "    <body name=\"hand\" mocap=\"true\"";
-  mjcf_detail::write_pose(os, hand_frame);
+  detail::write_mjcf_pose(os, hand_frame);
   os << ">\n";
   const Eigen::Isometry3d hand_inv = hand_frame.inverse();
   for (int b = 0; b < world.body_count(); ++b) {
     const RigidBody<S>& body = world.body(b);
     if (body.type != BodyType::kinematic) continue;
     for (int c = body.first_collider; c < body.first_collider + body.n_colliders; ++c)
-      write_geom(os, "      ", "hand_" + std::to_string(c), world.collider(c).spec,
-                 hand_inv * shape_pose(world.collider(c)), static_cast<double>(body.friction),
-                 torsion);
+      detail::write_mjcf_geom(os, "      ", "hand_" + std::to_string(c), world.collider(c).spec,
+                              hand_inv * shape_pose(world.collider(c)),
+                              static_cast<double>(body.friction), torsion);
   }
   os << "    </body>\n";
   int n_objects = 0;
@@ -114,7 +115,7 @@ void write_mjcf(std::ostream& os, const World<S>& world, const Eigen::Isometry3d
     const std::string name = n_objects == 0 ? "object" : "object_" + std::to_string(n_objects);
     ++n_objects;
     os << "    <body name=\"" << name << '"';
-    mjcf_detail::write_pose(os, body.pose());
+    detail::write_mjcf_pose(os, body.pose());
     os << ">\n";
     os << "      <joint name=\"" << name << "_free\" type=\"free\"/>\n";
     const Mat3 I = body.inertia.template cast<double>();
@@ -123,9 +124,9 @@ void write_mjcf(std::ostream& os, const World<S>& world, const Eigen::Isometry3d
        << static_cast<double>(body.mass) << "\" fullinertia=\"" << I(0, 0) << ' ' << I(1, 1) << ' '
        << I(2, 2) << ' ' << I(0, 1) << ' ' << I(0, 2) << ' ' << I(1, 2) << "\"/>\n";
     for (int k = body.first_collider; k < body.first_collider + body.n_colliders; ++k)
-      write_geom(os, "      ", name + "_" + std::to_string(k - body.first_collider),
-                 world.collider(k).spec, world.collider(k).spec.pose.isometry(),
-                 static_cast<double>(body.friction), torsion);
+      detail::write_mjcf_geom(os, "      ", name + "_" + std::to_string(k - body.first_collider),
+                              world.collider(k).spec, world.collider(k).spec.pose.isometry(),
+                              static_cast<double>(body.friction), torsion);
     os << "    </body>\n";
   }
   os << "  </worldbody>\n</mujoco>\n";

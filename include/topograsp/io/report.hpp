@@ -93,7 +93,7 @@ inline std::vector<std::string> write_report(const std::filesystem::path& dir,
         const RobotGrasp& t = r.transfers[m][k];
         constexpr auto& s = models::schunk_sdh;
         SvgPanel p = detail::grasp_panel(r.object, t.object_pose,
-                                         t.method + "\n" +
+                                         std::string(to_string(t.method)) + "\n" +
                                              (t.stable()  ? "stable"
                                               : t.planned ? "unstable"
                                                           : "not planned"),

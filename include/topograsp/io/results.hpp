@@ -48,28 +48,28 @@ inline Json json_vector(const auto& v) {
 }  // namespace detail
 
 /// results.json: {"config": {...}, "objects": [...], "grasps": [...]}; see docs/transfer.md.
-[[nodiscard]] inline Json results_json(const ExperimentConfig& config,
+[[nodiscard]] inline Json results_json(const ExperimentOptions& options,
                                        const std::vector<ObjectResult>& results) {
   Json cfg = Json::object();
   Json objects = Json::array(), methods = Json::array();
-  for (const GraspObject& o : config.objects) objects.push_back(o.name);
-  for (const TransferMethod m : config.methods) methods.push_back(to_string(m));
+  for (const GraspObject& o : options.objects) objects.push_back(o.name);
+  for (const TransferMethod m : options.methods) methods.push_back(to_string(m));
   cfg.set("objects", objects);
   cfg.set("methods", methods);
-  cfg.set("jobs", config.jobs);
-  cfg.set("seed", std::to_string(config.seed));
+  cfg.set("jobs", options.jobs);
+  cfg.set("seed", std::to_string(options.seed));
   cfg.set("shard",
-          std::to_string(config.shard_index + 1) + "/" + std::to_string(config.shard_count));
-  cfg.set("max_hypotheses", config.max_hypotheses);
+          std::to_string(options.shard_index + 1) + "/" + std::to_string(options.shard_count));
+  cfg.set("max_hypotheses", options.max_hypotheses);
   cfg.set("friction_from_object", true);
-  cfg.set("hand_stiffness", config.transfer.sim.scene.stepper.hand_stiffness);
-  cfg.set("squeeze", config.transfer.sim.close.squeeze);
-  cfg.set("shake_steps", config.transfer.sim.shake.shake_steps);
-  cfg.set("aico_steps", config.transfer.aico.steps);
+  cfg.set("hand_stiffness", options.transfer.sim.scene.stepper.hand_stiffness);
+  cfg.set("squeeze", options.transfer.sim.close.squeeze);
+  cfg.set("shake_steps", options.transfer.sim.shake.shake_steps);
+  cfg.set("aico_steps", options.transfer.aico.steps);
   Json transfer = Json::object();
   for (const auto& [name, field] : transfer_parameters)
-    transfer.set(std::string(name), config.transfer.*field);
-  transfer.set("winding_reference", std::string(to_string(config.transfer.winding_reference)));
+    transfer.set(std::string(name), options.transfer.*field);
+  transfer.set("winding_reference", std::string(to_string(options.transfer.winding_reference)));
   cfg.set("transfer", transfer);
   Json out_objects = Json::array();
   Json grasps = Json::array();
@@ -114,7 +114,8 @@ inline Json json_vector(const auto& v) {
         rec.set("id", id);
         rec.set("method", to_string(r.methods[m].method));
         rec.set("stable", t.stable());
-        rec.set("scene", t.planned ? Json(scene_path(r.object.name, id, t.method)) : Json());
+        rec.set("scene",
+                t.planned ? Json(scene_path(r.object.name, id, to_string(t.method))) : Json());
         // The human's y as the method used it (topological: around its winding reference).
         rec.set("winding_human",
                 detail::json_vector(t.winding_targets.empty() ? g.descriptor.values

@@ -7,8 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <fstream>
 #include <limits>
 #include <span>
 #include <string>
@@ -19,6 +17,7 @@
 #include <topograsp/aico/result.hpp>
 #include <topograsp/core/eigen.hpp>
 #include <topograsp/core/error.hpp>
+#include <topograsp/io/detail/svg_text.hpp>
 
 namespace topograsp {
 
@@ -199,12 +198,7 @@ class SvgLinePlot {
 
   /// Writes the SVG document to \p path.
   /// \throws topograsp::invalid_argument naming "path" if the file cannot be written.
-  void write(const std::string& path) const {
-    std::ofstream f(path);
-    if (!f) detail::throw_invalid_argument("path", "cannot open " + path + " for writing");
-    f << str();
-    if (!f) detail::throw_invalid_argument("path", "cannot write " + path);
-  }
+  void write(const std::string& path) const { detail::write_text_file(path, str()); }
 
  private:
   struct Series {
@@ -248,33 +242,13 @@ class SvgLinePlot {
            colour + "\"/>\n";
   }
   static double ax_flip(double v, const Axis& a) { return (a.hi - v) / (a.hi - a.lo); }
-  static std::string fmt(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.2f", v);
-    return b;
-  }
+  static std::string fmt(double v) { return detail::svg_number(v); }
+  // A tick label: as many decimals as the step needs.
   static std::string number(double v, double step) {
     const int digits = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
-    char b[32];
-    std::snprintf(b, sizeof b, "%.*f", digits, std::abs(v) < 0.5 * step ? 0.0 : v);
-    return b;
+    return detail::svg_number(std::abs(v) < 0.5 * step ? 0.0 : v, digits);
   }
-  static std::string escape(std::string_view s) {
-    std::string o;
-    for (char c : s) {
-      if (c == '<')
-        o += "&lt;";
-      else if (c == '>')
-        o += "&gt;";
-      else if (c == '&')
-        o += "&amp;";
-      else if (c == '"')
-        o += "&quot;";
-      else
-        o += c;
-    }
-    return o;
-  }
+  static std::string escape(std::string_view s) { return detail::xml_escape(s); }
   static std::string line(double x1, double y1, double x2, double y2, const std::string& colour,
                           const std::string& extra = {}) {
     return "<line x1=\"" + fmt(x1) + "\" y1=\"" + fmt(y1) + "\" x2=\"" + fmt(x2) + "\" y2=\"" +

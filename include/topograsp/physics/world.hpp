@@ -326,11 +326,6 @@ class World {
     M3 R = M3::Identity();
   };
 
-  static void require_non_negative(double value, std::string_view argument) {
-    if (!std::isfinite(value) || value < 0.0)
-      detail::throw_invalid_argument(argument,
-                                     "expected a finite number >= 0, got " + std::to_string(value));
-  }
   static void require_pose(const Pose& pose, std::string_view argument) {
     for (double v : pose.R) require_finite(v, argument);
     for (double v : pose.p) require_finite(v, argument);

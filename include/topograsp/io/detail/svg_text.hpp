@@ -15,12 +15,14 @@ namespace topograsp {
 
 namespace detail {
 
-/// \p v with two decimals ("%.2f"), never "-0.00": the coordinate format of the SVG writers.
-inline std::string svg_number(double v) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%.2f", v);
+/// \p v with \p digits decimals ("%.*f"; default 2, the coordinate format of the SVG writers),
+/// never a negative zero ("-0", "-0.00"): a value that rounds to zero prints without its sign.
+inline std::string svg_number(double v, int digits = 2) {
+  char b[352];  // room for the largest double with up to 16 decimals
+  std::snprintf(b, sizeof b, "%.*f", digits, v);
   std::string s(b);
-  if (s == "-0.00") s = "0.00";
+  if (s.size() > 1 && s[0] == '-' && s.find_first_not_of("0.", 1) == std::string::npos)
+    s.erase(0, 1);
   return s;
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Test objects made of primitives: a bottle and a hammer, as the paper's experiments use.
+// Objects made of primitives for tests and benchmarks: a bottle and a hammer, as the paper's
+// experiments use, and blocks whose distances are exact.
 #pragma once
 
 #include <topograsp/geometry/composite.hpp>
