@@ -46,7 +46,7 @@ namespace topograsp::detail {
        : TOPOGRASP_ASSERT_HANDLER(__FILE__, __LINE__, #condition, message))
 /// The disabled form: compiles the condition without evaluating it.
 #define TOPOGRASP_ASSERT_IGNORE(condition, message) \
-  static_cast<void>(sizeof(static_cast<bool>(condition)), sizeof(message))
+  (static_cast<void>(sizeof(static_cast<bool>(condition))), static_cast<void>(sizeof(message)))
 
 #if TOPOGRASP_ENABLE_ASSERTS
 #define TOPOGRASP_ASSERT(condition, message) TOPOGRASP_ASSERT_CHECK(condition, message)
