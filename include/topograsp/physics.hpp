@@ -6,6 +6,8 @@
 
 #include <topograsp/physics/close_hand.hpp>
 #include <topograsp/physics/contact.hpp>
+#include <topograsp/physics/contact_set.hpp>
+#include <topograsp/physics/contact_solver.hpp>
 #include <topograsp/physics/gravity_test.hpp>
 #include <topograsp/physics/hand_scene.hpp>
 #include <topograsp/physics/mass_properties.hpp>

@@ -70,7 +70,7 @@ inline void round_core(const Primitive& s, Vec3& a, Vec3& b) noexcept {
     Vec3 a0, a1, b0, b1, ca, cb;
     round_core(a, a0, a1);
     round_core(b, b0, b1);
-    closest_segment_segment(a0, a1, b0, b1, ca, cb);
+    closest_segment_points<double>(a0, a1, b0, b1, ca, cb);
     const Vec3 diff = cb - ca;
     const double dc = diff.norm();
     Vec3 n;
@@ -79,8 +79,8 @@ inline void round_core(const Primitive& s, Vec3& a, Vec3& b) noexcept {
     } else {
       const Vec3 ua = a1 - a0, ub = b1 - b0, c = ua.cross(ub);
       n = c.norm() > 0.0    ? Vec3(c.normalized())
-          : ua.norm() > 0.0 ? any_perpendicular(ua.normalized())
-          : ub.norm() > 0.0 ? any_perpendicular(ub.normalized())
+          : ua.norm() > 0.0 ? any_perpendicular<double>(ua)
+          : ub.norm() > 0.0 ? any_perpendicular<double>(ub)
                             : Vec3(Vec3::UnitZ());
     }
     return inflate(dc, ca, cb, n, ra, rb);
@@ -115,7 +115,7 @@ inline void round_core(const Primitive& s, Vec3& a, Vec3& b) noexcept {
   if (is_round(s)) {
     Vec3 a0, a1, ca, cb;
     round_core(s, a0, a1);
-    closest_segment_segment(a0, a1, x, x, ca, cb);
+    closest_segment_points<double>(a0, a1, x, x, ca, cb);
     return (x - ca).norm() - s.size[0];
   }
   return point_solid(s, x).sd;
