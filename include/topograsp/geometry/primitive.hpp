@@ -144,4 +144,27 @@ struct BasicPrimitive {
 /// The shape type of the geometry module (double precision).
 using Primitive = BasicPrimitive<double>;
 
+namespace detail {
+
+/// True for the shapes that are a core swept by a ball: a sphere (a point) and a capsule (a
+/// segment).
+[[nodiscard]] constexpr bool is_rounded(ShapeType t) noexcept {
+  return t == ShapeType::sphere || t == ShapeType::capsule;
+}
+
+/// The core segment (a0, a1) of a sphere (a0 = a1 = its centre) or capsule (along the third
+/// column of R).
+template <class S>
+void core_segment(const BasicPrimitive<S>& v, V3<S>& a0, V3<S>& a1) noexcept {
+  if (v.type == ShapeType::capsule) {
+    const V3<S> h = v.R.col(2) * v.size[1];
+    a0 = v.p - h;
+    a1 = v.p + h;
+  } else {
+    a0 = a1 = v.p;
+  }
+}
+
+}  // namespace detail
+
 }  // namespace topograsp

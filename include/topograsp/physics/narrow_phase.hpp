@@ -21,7 +21,7 @@ namespace topograsp {
 template <class S>
 void collide(const ShapeView<S>& a, const ShapeView<S>& b, S margin, ContactSet<S>& out) noexcept {
   using namespace detail;
-  const bool ra = is_rounded<S>(a.type), rb = is_rounded<S>(b.type);
+  const bool ra = is_rounded(a.type), rb = is_rounded(b.type);
   if (ra && rb) {
     collide_rounded_rounded<S>(a, b, margin, out);
   } else if (ra) {

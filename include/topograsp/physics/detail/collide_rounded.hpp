@@ -17,24 +17,6 @@
 
 namespace topograsp::detail {
 
-template <class S>
-constexpr bool is_rounded(ShapeType t) noexcept {
-  return t == ShapeType::sphere || t == ShapeType::capsule;
-}
-
-// The core segment (a0, a1) and radius of a sphere or capsule.
-template <class S>
-void core_segment(const ShapeView<S>& v, V3<S>& a0, V3<S>& a1, S& r) noexcept {
-  r = v.size[0];
-  if (v.type == ShapeType::capsule) {
-    const V3<S> h = v.R.col(2) * v.size[1];
-    a0 = v.p - h;
-    a1 = v.p + h;
-  } else {
-    a0 = a1 = v.p;
-  }
-}
-
 // Sphere/capsule against sphere/capsule: closest points of the core segments; two points when
 // two capsules lie side by side.
 template <class S>
@@ -42,8 +24,10 @@ void collide_rounded_rounded(const ShapeView<S>& A, const ShapeView<S>& B, S mar
                              ContactSet<S>& out) noexcept {
   V3<S> a0, a1, b0, b1;
   S ra, rb;
-  core_segment(A, a0, a1, ra);
-  core_segment(B, b0, b1, rb);
+  core_segment<S>(A, a0, a1);
+  core_segment<S>(B, b0, b1);
+  ra = A.size[0];
+  rb = B.size[0];
   S s, t;
   closest_segment_params<S>(a0, a1, b0, b1, s, t);
   const V3<S> pa = a0 + s * (a1 - a0), pb = b0 + t * (b1 - b0);
@@ -107,7 +91,8 @@ void collide_rounded_solid(const ShapeView<S>& A, const ShapeView<S>& B, S margi
                            ContactSet<S>& out) noexcept {
   V3<S> w0, w1;
   S r;
-  core_segment(A, w0, w1, r);
+  core_segment<S>(A, w0, w1);
+  r = A.size[0];
   const M3<S> Rt = B.R.transpose();
   const V3<S> P0 = Rt * (w0 - B.p), P1 = Rt * (w1 - B.p), D = P1 - P0;
   const V3<S>& h = B.size;
