@@ -179,6 +179,8 @@ template <class S>
 [[nodiscard]] BasicPointSolid<S> point_cylinder(const V3<S>& x, const M3<S>& R, const V3<S>& p,
                                                 S rad, S hh) noexcept {
   const V3<S> l = R.transpose() * (x - p);
+  bool inside;
+  const V3<S> c = closest_on_cylinder<S>(rad, hh, l, inside);
   const S rho = std::sqrt(l.x() * l.x() + l.y() * l.y());
   const V3<S> u = rho > S(0) ? V3<S>(l.x() / rho, l.y() / rho, S(0)) : V3<S>(V3<S>::UnitX());
   const S zs = l.z() >= S(0) ? S(1) : S(-1);
@@ -186,11 +188,17 @@ template <class S>
   BasicPointSolid<S> r;
   V3<S> yl, nl;
   if (dr > S(0) && dz > S(0)) {
-    yl = rad * u + V3<S>(S(0), S(0), zs * hh);
+    // Outside beyond the rim: the rim point closest_on_cylinder() found.
+    yl = c;
     r.sd = std::sqrt(dr * dr + dz * dz);
     nl = (l - yl) / r.sd;
-  } else if (dr > S(0) || (dz <= S(0) && dr > dz)) {
-    // Outside through the side, or inside nearer the side than a cap.
+  } else if (dr > S(0)) {
+    // Outside through the side: the side point closest_on_cylinder() found.
+    yl = c;
+    r.sd = dr;
+    nl = u;
+  } else if (dz <= S(0) && dr > dz) {
+    // Inside nearer the side than a cap.
     yl = V3<S>(rad * u.x(), rad * u.y(), l.z());
     r.sd = dr;
     nl = u;
