@@ -44,8 +44,9 @@ void prepare_contacts(std::span<Manifold<S>> manifolds, std::span<const RigidBod
   const S torsion = static_cast<S>(options.torsional_friction_radius);
   for (Manifold<S>& m : manifolds) {
     if (m.count == 0) continue;
-    TOPOGRASP_ASSERT(m.body_a >= 0 && m.body_b >= 0 && std::size_t(m.body_a) < bodies.size() &&
-                         std::size_t(m.body_b) < bodies.size(),
+    TOPOGRASP_ASSERT(m.body_a >= 0 && m.body_b >= 0 &&
+                         static_cast<std::size_t>(m.body_a) < bodies.size() &&
+                         static_cast<std::size_t>(m.body_b) < bodies.size(),
                      "a manifold's bodies are in the world");
     const RigidBody<S>& A = bodies[static_cast<std::size_t>(m.body_a)];
     const RigidBody<S>& B = bodies[static_cast<std::size_t>(m.body_b)];

@@ -51,7 +51,8 @@ struct Collider {
 ///  3. for each of StepperOptions::substeps sub-steps of h = dt / substeps: integrate velocities
 ///     (gravity), warm start, solve contacts with a soft position bias, integrate positions
 ///     (semi-implicit Euler; rotations by the exact exponential), relax contacts without bias
-///     (the "soft step" of Box2D v3);
+///     (the "soft step" of Box2D v3; the contact stages are the free functions of
+///     physics/contact_solver.hpp, which step() calls in this order);
 ///  4. kinematic bodies are placed exactly at their targets; a non-finite state or a speed above
 ///     StepperOptions::max_speed undoes the step and ends the run with Status::numerical_issue.
 ///
