@@ -180,7 +180,7 @@ TEST_CASE("a stack of five boxes stands for 10 s", "[physics][oracle]") {
   const Eigen::Vector3d top1 = top.x;
   for (int i = 0; i < 480; ++i) REQUIRE(w.step() == Status::success);
   CHECK((top.x - top1).norm() < 1e-5);
-  for (int id : ids) CHECK(physics_detail::rotation_angle<double>(w.body(id).R) < deg(0.5));
+  for (int id : ids) CHECK(detail::rotation_angle<double>(w.body(id).R) < deg(0.5));
   CHECK(w.kinetic_energy() < 1e-10);
 }
 

@@ -42,7 +42,7 @@ struct CloseResult {
   int contacts = 0;  ///< hand-object contact points after the squeeze
 };
 
-namespace physics_detail {
+namespace detail {
 
 // Links moved by configuration entry i: those with a joint driven by entry i in their support.
 template <const auto& M>
@@ -57,7 +57,7 @@ std::array<bool, std::remove_cvref_t<decltype(M)>::n_links> links_after_joint(in
   return mask;
 }
 
-}  // namespace physics_detail
+}  // namespace detail
 
 /// Closes the hand of \p scene on its object: every joint with a closing direction (LinkSpec::
 /// closing, from the model) moves that way in increments, all joints in turn, until one of the
@@ -82,8 +82,7 @@ CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options
   const Eigen::Isometry3d hand = scene.hand_pose();
   const Vec<nq> lo = lower_limits<M>(), hi = upper_limits<M>(), dir = closing_directions<M>();
   std::array<std::array<bool, ModelType::n_links>, static_cast<std::size_t>(nq)> after{};
-  for (int i = 0; i < nq; ++i)
-    after[static_cast<std::size_t>(i)] = physics_detail::links_after_joint<M>(i);
+  for (int i = 0; i < nq; ++i) after[static_cast<std::size_t>(i)] = detail::links_after_joint<M>(i);
   KinematicsData<M> kin;
   const S margin = static_cast<S>(options.touch_distance);
   // True if a link after joint i touches the object at configuration q.
@@ -161,7 +160,7 @@ CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options
   // Squeeze in the simulation, gravity off.
   scene.place_hand(hand, result.q_contact);
   World<S>& w = scene.world();
-  const physics_detail::V3<S> gravity = w.gravity();
+  const detail::V3<S> gravity = w.gravity();
   w.set_gravity(Eigen::Vector3d::Zero());
   for (int k = 1; k <= options.squeeze_steps && result.status == Status::success; ++k) {
     const double a = static_cast<double>(k) / options.squeeze_steps;

@@ -46,10 +46,9 @@ GravityTestResult gravity_test(const HandScene<M, S>& scene, const ShakeOptions&
     ShakeResult r;
     for (int k = 0; k < options.shake_steps && r.status == Status::success; ++k)
       r.status = copy.step();
-    physics_detail::object_motion(reference, copy.object_in_hand(), out.translation[u],
-                                  out.rotation[u]);
+    detail::object_motion(reference, copy.object_in_hand(), out.translation[u], out.rotation[u]);
     out.contacts[u] = copy.hand_contacts(options.touch_distance);
-    physics_detail::judge(r, out.contacts[u], out.translation[u], out.rotation[u], options);
+    detail::judge(r, out.contacts[u], out.translation[u], out.rotation[u], options);
     out.held[u] = r.stable;
     if (r.status != Status::success && out.status == Status::success) out.status = r.status;
     out.stable = out.stable && r.stable;

@@ -59,7 +59,7 @@ struct ShakeResult {
   int steps = 0;                    ///< steps taken
 };
 
-namespace physics_detail {
+namespace detail {
 
 // SplitMix64 (Steele, Lea, Flood 2014): a tiny seeded generator that is the same everywhere
 // (the distributions of <random> are not).
@@ -101,7 +101,7 @@ void judge(Result& r, int contacts, double translation, double rotation,
   r.stable = r.reason.empty();
 }
 
-}  // namespace physics_detail
+}  // namespace detail
 
 /// Runs the shake test on \p scene (which it advances; copy the scene first to keep it), after
 /// close_hand(): (1) options.settle_steps steps under gravity with the hand still; the object's
@@ -140,7 +140,7 @@ ShakeResult shake_test(HandScene<M, S>& scene, const ShakeOptions& options = {})
   } else {
     pivot = start.translation();
   }
-  physics_detail::SplitMix64 rng{options.seed};
+  detail::SplitMix64 rng{options.seed};
   const int length = std::max(1, options.shake_steps / options.shakes);
   Vec3 axis = Vec3::UnitZ();
   double amplitude = 0.0;
@@ -165,10 +165,10 @@ ShakeResult shake_test(HandScene<M, S>& scene, const ShakeOptions& options = {})
     ++r.steps;
   }
   r.simulated_time = r.steps * dt;
-  physics_detail::object_motion(reference, scene.object_in_hand(), r.translation, r.rotation);
+  detail::object_motion(reference, scene.object_in_hand(), r.translation, r.rotation);
   r.contacts = scene.hand_contacts(options.touch_distance);
   r.force = scene.hand_force();
-  physics_detail::judge(r, r.contacts, r.translation, r.rotation, options);
+  detail::judge(r, r.contacts, r.translation, r.rotation, options);
   if (!std::isfinite(r.force)) {
     r.finite = false;
     r.stable = false;

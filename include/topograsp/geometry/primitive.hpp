@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
 /// Primitive: a convex collision shape (sphere, capsule, box, cylinder) placed in the world, the
-/// run-time counterpart of a model's ShapeSpec.
+/// run-time counterpart of a model's ShapeSpec. BasicPrimitive<S> is the same shape over the
+/// scalar type S; the physics module's ShapeView<S> is one with a polytope attached.
 #pragma once
 
 #include <cmath>
@@ -9,6 +10,7 @@
 #include <topograsp/core/constants.hpp>
 #include <topograsp/core/eigen.hpp>
 #include <topograsp/core/error.hpp>
+#include <topograsp/geometry/detail/closest.hpp>
 #include <topograsp/model/spec.hpp>
 
 namespace topograsp {
@@ -20,18 +22,22 @@ namespace topograsp {
 /// - capsule: size = {radius, half length of the segment, -}
 /// - box: size = half extents {x, y, z} along the columns of R
 /// - cylinder: size = {radius, half height, -}
-struct Primitive {
+///
+/// \tparam S the scalar type (Primitive is BasicPrimitive<double>; the named constructors take
+///         double arguments and exist for S = double only).
+template <class S>
+struct BasicPrimitive {
   ShapeType type = ShapeType::sphere;
-  Mat3 R = Mat3::Identity();  ///< orientation: local to world
-  Vec3 p = Vec3::Zero();      ///< centre (m)
-  Vec3 size = Vec3::Zero();   ///< see above (m)
+  detail::M3<S> R = detail::M3<S>::Identity();  ///< orientation: local to world
+  detail::V3<S> p = detail::V3<S>::Zero();      ///< centre (m)
+  detail::V3<S> size = detail::V3<S>::Zero();   ///< see above (m)
 
   /// A sphere of \p radius at \p centre.
   /// \throws topograsp::invalid_argument naming "centre" or "radius".
-  [[nodiscard]] static Primitive sphere(const Vec3& centre, double radius) {
+  [[nodiscard]] static BasicPrimitive sphere(const Vec3& centre, double radius) {
     require_finite(centre, "centre");
     require_positive(radius, "radius");
-    Primitive s;
+    BasicPrimitive s;
     s.type = ShapeType::sphere;
     s.p = centre;
     s.size = Vec3(radius, 0.0, 0.0);
@@ -41,11 +47,11 @@ struct Primitive {
   /// A capsule of \p radius around the segment from \p a to \p b (a = b gives a sphere-like
   /// capsule of zero length).
   /// \throws topograsp::invalid_argument naming "a", "b" or "radius".
-  [[nodiscard]] static Primitive capsule(const Vec3& a, const Vec3& b, double radius) {
+  [[nodiscard]] static BasicPrimitive capsule(const Vec3& a, const Vec3& b, double radius) {
     require_finite(a, "a");
     require_finite(b, "b");
     require_positive(radius, "radius");
-    Primitive s;
+    BasicPrimitive s;
     s.type = ShapeType::capsule;
     s.p = 0.5 * (a + b);
     const Vec3 u = b - a;
@@ -57,10 +63,10 @@ struct Primitive {
 
   /// A box with half extents \p half at \p pose (its rotation must be orthonormal).
   /// \throws topograsp::invalid_argument naming "pose" (non-finite) or "half" (an entry <= 0).
-  [[nodiscard]] static Primitive box(const Eigen::Isometry3d& pose, const Vec3& half) {
+  [[nodiscard]] static BasicPrimitive box(const Eigen::Isometry3d& pose, const Vec3& half) {
     require_finite(pose.matrix(), "pose");
     for (int k = 0; k < 3; ++k) require_positive(half[k], "half");
-    Primitive s;
+    BasicPrimitive s;
     s.type = ShapeType::box;
     s.R = pose.linear();
     s.p = pose.translation();
@@ -70,13 +76,13 @@ struct Primitive {
 
   /// A cylinder of \p radius and height 2 * \p half_height along the z axis of \p pose.
   /// \throws topograsp::invalid_argument naming "pose", "radius" or "half_height" (< 0).
-  [[nodiscard]] static Primitive cylinder(const Eigen::Isometry3d& pose, double radius,
-                                          double half_height) {
+  [[nodiscard]] static BasicPrimitive cylinder(const Eigen::Isometry3d& pose, double radius,
+                                               double half_height) {
     require_finite(pose.matrix(), "pose");
     require_positive(radius, "radius");
     require_finite(half_height, "half_height");
     if (half_height < 0.0) detail::throw_invalid_argument("half_height", "expected a number >= 0");
-    Primitive s;
+    BasicPrimitive s;
     s.type = ShapeType::cylinder;
     s.R = pose.linear();
     s.p = pose.translation();
@@ -86,18 +92,18 @@ struct Primitive {
 
   /// The shape \p spec of a model (pose in its link frame) on a link at world pose (R_link,
   /// p_link). No checks (a checked model's shapes are valid).
-  [[nodiscard]] static Primitive from_spec(const ShapeSpec& spec, const Mat3& R_link,
-                                           const Vec3& p_link) noexcept {
-    Primitive s;
+  [[nodiscard]] static BasicPrimitive from_spec(const ShapeSpec& spec, const Mat3& R_link,
+                                                const Vec3& p_link) noexcept {
+    BasicPrimitive s;
     s.type = spec.type;
     s.R.noalias() = R_link * spec.pose.rotation();
     s.p.noalias() = p_link + R_link * spec.pose.translation();
-    s.size = Vec3(spec.size[0], spec.size[1], spec.size[2]);
+    s.size = detail::V3<S>(spec.size[0], spec.size[1], spec.size[2]);
     return s;
   }
 
   /// The radius of the smallest sphere about \c p that holds the shape (m).
-  [[nodiscard]] double bounding_radius() const noexcept {
+  [[nodiscard]] S bounding_radius() const noexcept {
     switch (type) {
       case ShapeType::sphere:
         return size[0];
@@ -112,7 +118,7 @@ struct Primitive {
   }
 
   /// The volume (m^3).
-  [[nodiscard]] double volume() const noexcept {
+  [[nodiscard]] S volume() const noexcept {
     switch (type) {
       case ShapeType::sphere:
         return 4.0 / 3.0 * pi * size[0] * size[0] * size[0];
@@ -127,12 +133,38 @@ struct Primitive {
   }
 
   /// This shape moved by the rigid transform \p T (applied in the world frame).
-  [[nodiscard]] Primitive transformed(const Eigen::Isometry3d& T) const noexcept {
-    Primitive s = *this;
+  [[nodiscard]] BasicPrimitive transformed(const Eigen::Isometry3d& T) const noexcept {
+    BasicPrimitive s = *this;
     s.R = T.linear() * R;
     s.p = T * p;
     return s;
   }
 };
+
+/// The shape type of the geometry module (double precision).
+using Primitive = BasicPrimitive<double>;
+
+namespace detail {
+
+/// True for the shapes that are a core swept by a ball: a sphere (a point) and a capsule (a
+/// segment).
+[[nodiscard]] constexpr bool is_rounded(ShapeType t) noexcept {
+  return t == ShapeType::sphere || t == ShapeType::capsule;
+}
+
+/// The core segment (a0, a1) of a sphere (a0 = a1 = its centre) or capsule (along the third
+/// column of R).
+template <class S>
+void core_segment(const BasicPrimitive<S>& v, V3<S>& a0, V3<S>& a1) noexcept {
+  if (v.type == ShapeType::capsule) {
+    const V3<S> h = v.R.col(2) * v.size[1];
+    a0 = v.p - h;
+    a1 = v.p + h;
+  } else {
+    a0 = a1 = v.p;
+  }
+}
+
+}  // namespace detail
 
 }  // namespace topograsp

@@ -15,17 +15,8 @@ namespace topograsp {
 
 namespace detail {
 
-[[nodiscard]] inline bool is_round(const Primitive& s) noexcept {
-  return s.type == ShapeType::sphere || s.type == ShapeType::capsule;
-}
 [[nodiscard]] inline double round_radius(const Primitive& s) noexcept {
-  return is_round(s) ? s.size[0] : 0.0;
-}
-/// The axis segment of a sphere (a point) or capsule.
-inline void round_core(const Primitive& s, Vec3& a, Vec3& b) noexcept {
-  const double h = s.type == ShapeType::capsule ? s.size[1] : 0.0;
-  a = s.p - h * s.R.col(2);
-  b = s.p + h * s.R.col(2);
+  return is_rounded(s.type) ? s.size[0] : 0.0;
 }
 [[nodiscard]] inline PointSolid point_solid(const Primitive& s, const Vec3& x) noexcept {
   return s.type == ShapeType::box ? point_box(x, s.R, s.p, s.size)
@@ -66,11 +57,11 @@ inline void round_core(const Primitive& s, Vec3& a, Vec3& b) noexcept {
 [[nodiscard]] inline Contact signed_distance(const Primitive& a, const Primitive& b) noexcept {
   using namespace detail;
   const double ra = round_radius(a), rb = round_radius(b);
-  if (is_round(a) && is_round(b)) {
+  if (is_rounded(a.type) && is_rounded(b.type)) {
     Vec3 a0, a1, b0, b1, ca, cb;
-    round_core(a, a0, a1);
-    round_core(b, b0, b1);
-    closest_segment_segment(a0, a1, b0, b1, ca, cb);
+    core_segment<double>(a, a0, a1);
+    core_segment<double>(b, b0, b1);
+    closest_segment_points<double>(a0, a1, b0, b1, ca, cb);
     const Vec3 diff = cb - ca;
     const double dc = diff.norm();
     Vec3 n;
@@ -79,8 +70,8 @@ inline void round_core(const Primitive& s, Vec3& a, Vec3& b) noexcept {
     } else {
       const Vec3 ua = a1 - a0, ub = b1 - b0, c = ua.cross(ub);
       n = c.norm() > 0.0    ? Vec3(c.normalized())
-          : ua.norm() > 0.0 ? any_perpendicular(ua.normalized())
-          : ub.norm() > 0.0 ? any_perpendicular(ub.normalized())
+          : ua.norm() > 0.0 ? any_perpendicular<double>(ua)
+          : ub.norm() > 0.0 ? any_perpendicular<double>(ub)
                             : Vec3(Vec3::UnitZ());
     }
     return inflate(dc, ca, cb, n, ra, rb);
@@ -112,10 +103,10 @@ inline void round_core(const Primitive& s, Vec3& a, Vec3& b) noexcept {
 /// every shape type.
 [[nodiscard]] inline double signed_distance(const Primitive& s, const Vec3& x) noexcept {
   using namespace detail;
-  if (is_round(s)) {
+  if (is_rounded(s.type)) {
     Vec3 a0, a1, ca, cb;
-    round_core(s, a0, a1);
-    closest_segment_segment(a0, a1, x, x, ca, cb);
+    core_segment<double>(s, a0, a1);
+    closest_segment_points<double>(a0, a1, x, x, ca, cb);
     return (x - ca).norm() - s.size[0];
   }
   return point_solid(s, x).sd;

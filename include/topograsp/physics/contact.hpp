@@ -1,20 +1,22 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
 /// ContactPoint and Manifold: the contacts between one pair of shapes and the solver's state for
-/// them (accumulated impulses for warm starting, effective masses, softness).
+/// them (accumulated impulses for warm starting, effective masses, softness), and
+/// match_contacts(), which carries impulses from one step's points to the next's.
 #pragma once
 
 #include <array>
 #include <cstdint>
 
-#include <topograsp/physics/detail/math.hpp>
+#include <topograsp/geometry/detail/closest.hpp>
+#include <topograsp/physics/contact_set.hpp>
 
 namespace topograsp {
 
 /// One contact point and its solver state.
 template <class S = double>
 struct ContactPoint {
-  using V3 = physics_detail::V3<S>;
+  using V3 = detail::V3<S>;
   V3 point = V3::Zero();    ///< world point midway between the surfaces at the step's start (m)
   V3 normal = V3::UnitZ();  ///< unit, from body A into body B
   S separation = S(0);      ///< at the step's start (m); negative when overlapping
@@ -49,10 +51,47 @@ struct Manifold {
   std::array<ContactPoint<S>, 4> points{};
   S friction = S(0);  ///< the pair's Coulomb coefficient
   bool hand = false;  ///< one body is kinematic: physical stiffness, torsional friction
-  physics_detail::V3<S> twist_axis = physics_detail::V3<S>::UnitZ();
+  detail::V3<S> twist_axis = detail::V3<S>::UnitZ();
   S twist_mass = S(0);     ///< 0 when the pair has no torsional friction this step
   S twist_impulse = S(0);  ///< accumulated torsional impulse (N m s)
-  physics_detail::V3<S> twist_axis_now = physics_detail::V3<S>::UnitZ();  ///< turned with A
+  detail::V3<S> twist_axis_now = detail::V3<S>::UnitZ();  ///< turned with A
 };
+
+/// Replaces the points of \p m by the narrow phase's \p found, each starting from the impulses of
+/// the previous point with the same feature id (warm starting) or from zero; a manifold left
+/// without points drops its torsional impulse.
+template <class S>
+void match_contacts(Manifold<S>& m, const ContactSet<S>& found) noexcept {
+  // Keep the previous points' impulses for warm starting.
+  const int old_count = m.count;
+  std::array<std::uint32_t, 4> old_id{};
+  std::array<S, 4> old_normal{};
+  std::array<detail::V3<S>, 4> old_friction{};
+  for (int k = 0; k < old_count; ++k) {
+    const auto u = static_cast<std::size_t>(k);
+    old_id[u] = m.points[u].id;
+    old_normal[u] = m.points[u].normal_impulse;
+    old_friction[u] = m.points[u].friction_impulse;
+  }
+  m.count = found.count;
+  if (found.count == 0) m.twist_impulse = S(0);
+  for (int k = 0; k < found.count; ++k) {
+    const auto u = static_cast<std::size_t>(k);
+    ContactPoint<S>& c = m.points[u];
+    const ContactFeature<S>& f = found.points[u];
+    c.point = f.point;
+    c.normal = f.normal;
+    c.separation = f.separation;
+    c.id = f.id;
+    c.normal_impulse = S(0);
+    c.friction_impulse.setZero();
+    for (int o = 0; o < old_count; ++o)
+      if (old_id[static_cast<std::size_t>(o)] == f.id) {
+        c.normal_impulse = old_normal[static_cast<std::size_t>(o)];
+        c.friction_impulse = old_friction[static_cast<std::size_t>(o)];
+        break;
+      }
+  }
+}
 
 }  // namespace topograsp

@@ -16,10 +16,10 @@ namespace topograsp {
 /// The mass properties of a rigid body in its own frame.
 template <class S = double>
 struct MassProperties {
-  S mass = S(0);                                              ///< kg
-  physics_detail::V3<S> com = physics_detail::V3<S>::Zero();  ///< centre of mass (m, body frame)
+  S mass = S(0);                              ///< kg
+  detail::V3<S> com = detail::V3<S>::Zero();  ///< centre of mass (m, body frame)
   /// Inertia tensor about the centre of mass, in body-frame axes (kg m^2).
-  physics_detail::M3<S> inertia = physics_detail::M3<S>::Zero();
+  detail::M3<S> inertia = detail::M3<S>::Zero();
 };
 
 /// Throws topograsp::invalid_argument naming \p argument unless \p s has positive, finite sizes
@@ -58,8 +58,8 @@ inline void require_valid_shape(const ShapeSpec& s, std::string_view argument) {
 /// face, moved by the parallel-axis theorem). Cylinder and capsule axes are the shape's local z.
 template <class S = double>
 [[nodiscard]] MassProperties<S> shape_mass_properties(const ShapeSpec& s, double density) {
-  using physics_detail::M3;
-  using physics_detail::V3;
+  using detail::M3;
+  using detail::V3;
   const double r = s.size[0];
   double m = 0.0, ixx = 0.0, iyy = 0.0, izz = 0.0;
   switch (s.type) {
@@ -98,8 +98,8 @@ template <class S = double>
   }
   MassProperties<S> out;
   out.mass = static_cast<S>(m);
-  out.com = physics_detail::translation_of<S>(s.pose);
-  const M3<S> R = physics_detail::rotation_of<S>(s.pose);
+  out.com = detail::translation_of<S>(s.pose);
+  const M3<S> R = detail::rotation_of<S>(s.pose);
   const V3<S> diag(static_cast<S>(ixx), static_cast<S>(iyy), static_cast<S>(izz));
   out.inertia = R * diag.asDiagonal() * R.transpose();
   return out;
@@ -113,8 +113,8 @@ template <class S = double>
 template <class S = double>
 [[nodiscard]] MassProperties<S> body_mass_properties(std::span<const ShapeSpec> shapes, double mass,
                                                      double density) {
-  using physics_detail::M3;
-  using physics_detail::V3;
+  using detail::M3;
+  using detail::V3;
   if (shapes.empty()) detail::throw_invalid_argument("shapes", "expected at least one shape");
   for (std::size_t i = 0; i < shapes.size(); ++i)
     require_valid_shape(shapes[i], "shapes[" + std::to_string(i) + "]");

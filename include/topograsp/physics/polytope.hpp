@@ -33,17 +33,17 @@ struct Polytope {
 
   int n_vertices = 0, n_faces = 0, n_edges = 0, n_directions = 0;
   bool prism = false;  ///< a cylinder's prism: direction 0 is the axis, the others cap edges
-  std::array<physics_detail::V3<S>, max_vertices> vertices{};
-  std::array<physics_detail::V3<S>, max_faces> normals{};
+  std::array<detail::V3<S>, max_vertices> vertices{};
+  std::array<detail::V3<S>, max_faces> normals{};
   std::array<S, max_faces> offsets{};  ///< normal . x = offset on the face plane
   std::array<int, max_faces> face_begin{}, face_size{};
   std::array<int, max_face_indices> face_indices{};
   std::array<std::array<int, 2>, max_edges> edges{};
   std::array<int, max_edges> edge_direction{};  ///< index into directions
-  std::array<physics_detail::V3<S>, max_directions> directions{};
+  std::array<detail::V3<S>, max_directions> directions{};
 };
 
-namespace physics_detail {
+namespace detail {
 
 template <class S>
 void add_face(Polytope<S>& P, const V3<S>& n, const int* ids_in, int k) {
@@ -103,12 +103,12 @@ void finish_edges(Polytope<S>& P) {
   }
 }
 
-}  // namespace physics_detail
+}  // namespace detail
 
 /// The polytope of a box with half extents \p h, centred at the origin.
 template <class S = double>
-[[nodiscard]] Polytope<S> box_polytope(const physics_detail::V3<S>& h) {
-  using physics_detail::V3;
+[[nodiscard]] Polytope<S> box_polytope(const detail::V3<S>& h) {
+  using detail::V3;
   Polytope<S> P;
   for (int i = 0; i < 8; ++i)
     P.vertices[static_cast<std::size_t>(i)] =
@@ -122,14 +122,14 @@ template <class S = double>
       int c = 0;
       for (int i = 0; i < 8; ++i)
         if (((i >> k) & 1) == s) ids[static_cast<std::size_t>(c++)] = i;
-      physics_detail::add_face<S>(P, n, ids.data(), 4);
+      detail::add_face<S>(P, n, ids.data(), 4);
     }
   // Directions first along x, y, z so that direction k is the axis k.
   P.n_directions = 3;
   P.directions[0] = V3<S>::UnitX();
   P.directions[1] = V3<S>::UnitY();
   P.directions[2] = V3<S>::UnitZ();
-  physics_detail::finish_edges<S>(P);
+  detail::finish_edges<S>(P);
   return P;
 }
 
@@ -137,7 +137,7 @@ template <class S = double>
 /// cylinder_prism_sides sides whose vertices lie on the cylinder.
 template <class S = double>
 [[nodiscard]] Polytope<S> cylinder_polytope(S radius, S half_height) {
-  using physics_detail::V3;
+  using detail::V3;
   constexpr int n = cylinder_prism_sides;
   Polytope<S> P;
   P.prism = true;
@@ -153,18 +153,18 @@ template <class S = double>
     bottom[static_cast<std::size_t>(i)] = i;
     top[static_cast<std::size_t>(i)] = i + n;
   }
-  physics_detail::add_face<S>(P, V3<S>(S(0), S(0), S(-1)), bottom.data(), n);
-  physics_detail::add_face<S>(P, V3<S>(S(0), S(0), S(1)), top.data(), n);
+  detail::add_face<S>(P, V3<S>(S(0), S(0), S(-1)), bottom.data(), n);
+  detail::add_face<S>(P, V3<S>(S(0), S(0), S(1)), top.data(), n);
   for (int i = 0; i < n; ++i) {
     const int j = (i + 1) % n;
     const double a = two_pi * (static_cast<double>(i) + 0.5) / n;
     const V3<S> normal(static_cast<S>(std::cos(a)), static_cast<S>(std::sin(a)), S(0));
     const int ids[4] = {i, j, i + n, j + n};
-    physics_detail::add_face<S>(P, normal, ids, 4);
+    detail::add_face<S>(P, normal, ids, 4);
   }
   P.n_directions = 1;
   P.directions[0] = V3<S>::UnitZ();
-  physics_detail::finish_edges<S>(P);
+  detail::finish_edges<S>(P);
   return P;
 }
 

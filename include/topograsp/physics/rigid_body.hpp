@@ -39,17 +39,17 @@ struct BodyDesc {
 /// the shapes and BodyDesc::pose refer to) is at x - R local_com.
 template <class S = double>
 struct RigidBody {
-  using V3 = physics_detail::V3<S>;
-  using M3 = physics_detail::M3<S>;
+  using V3 = detail::V3<S>;
+  using M3 = detail::M3<S>;
 
   BodyType type = BodyType::dynamic;
-  V3 x = V3::Zero();                                                ///< centre of mass, world (m)
-  physics_detail::Quat<S> q = physics_detail::Quat<S>::Identity();  ///< orientation
-  M3 R = M3::Identity();                                            ///< rotation matrix of q
-  V3 v = V3::Zero();                                                ///< linear velocity of x (m/s)
-  V3 w = V3::Zero();                  ///< angular velocity, world (rad/s)
-  V3 local_com = V3::Zero();          ///< centre of mass in the body frame
-  S mass = S(0), inv_mass = S(0);     ///< kg, 1/kg (0 if not dynamic)
+  V3 x = V3::Zero();                                ///< centre of mass, world (m)
+  detail::Quat<S> q = detail::Quat<S>::Identity();  ///< orientation
+  M3 R = M3::Identity();                            ///< rotation matrix of q
+  V3 v = V3::Zero();                                ///< linear velocity of x (m/s)
+  V3 w = V3::Zero();                                ///< angular velocity, world (rad/s)
+  V3 local_com = V3::Zero();                        ///< centre of mass in the body frame
+  S mass = S(0), inv_mass = S(0);                   ///< kg, 1/kg (0 if not dynamic)
   M3 inertia = M3::Zero();            ///< about the centre of mass, body axes (kg m^2)
   M3 inv_inertia_local = M3::Zero();  ///< its inverse
   M3 inv_inertia = M3::Zero();        ///< inverse inertia in world axes

@@ -10,9 +10,11 @@
 #include <string>
 #include <vector>
 
+#include <topograsp/core/assert.hpp>
 #include <topograsp/core/error.hpp>
 #include <topograsp/core/status.hpp>
 #include <topograsp/physics/contact.hpp>
+#include <topograsp/physics/contact_solver.hpp>
 #include <topograsp/physics/mass_properties.hpp>
 #include <topograsp/physics/narrow_phase.hpp>
 #include <topograsp/physics/polytope.hpp>
@@ -26,14 +28,14 @@ template <class S = double>
 struct Collider {
   int body = -1;
   ShapeType type = ShapeType::sphere;
-  physics_detail::V3<S> size = physics_detail::V3<S>::Zero();         ///< as ShapeSpec::size
-  physics_detail::M3<S> local_R = physics_detail::M3<S>::Identity();  ///< in body axes
-  physics_detail::V3<S> local_p = physics_detail::V3<S>::Zero();      ///< from the centre of mass
+  detail::V3<S> size = detail::V3<S>::Zero();         ///< as ShapeSpec::size
+  detail::M3<S> local_R = detail::M3<S>::Identity();  ///< in body axes
+  detail::V3<S> local_p = detail::V3<S>::Zero();      ///< from the centre of mass
   S bounding_radius = S(0);  ///< of a sphere about the shape's centre that contains it (m)
   int polytope = -1;         ///< index into World's polytopes (boxes and cylinders)
-  physics_detail::M3<S> R = physics_detail::M3<S>::Identity();  ///< world rotation (current)
-  physics_detail::V3<S> p = physics_detail::V3<S>::Zero();      ///< world position (current)
-  ShapeSpec spec{};  ///< the shape as given, in the body frame
+  detail::M3<S> R = detail::M3<S>::Identity();  ///< world rotation (current)
+  detail::V3<S> p = detail::V3<S>::Zero();      ///< world position (current)
+  ShapeSpec spec{};                             ///< the shape as given, in the body frame
 };
 
 /// The rigid-body stepper over the scalar type \p S (double; float compiles and runs).
@@ -49,7 +51,8 @@ struct Collider {
 ///  3. for each of StepperOptions::substeps sub-steps of h = dt / substeps: integrate velocities
 ///     (gravity), warm start, solve contacts with a soft position bias, integrate positions
 ///     (semi-implicit Euler; rotations by the exact exponential), relax contacts without bias
-///     (the "soft step" of Box2D v3);
+///     (the "soft step" of Box2D v3; the contact stages are the free functions of
+///     physics/contact_solver.hpp, which step() calls in this order);
 ///  4. kinematic bodies are placed exactly at their targets; a non-finite state or a speed above
 ///     StepperOptions::max_speed undoes the step and ends the run with Status::numerical_issue.
 ///
@@ -59,8 +62,8 @@ struct Collider {
 template <class S = double>
 class World {
  public:
-  using V3 = physics_detail::V3<S>;
-  using M3 = physics_detail::M3<S>;
+  using V3 = detail::V3<S>;
+  using M3 = detail::M3<S>;
 
   /// An empty world. Throws topograsp::invalid_argument if an option is out of range (a
   /// non-positive time step, fewer than 1 sub-step, a negative stiffness, a non-finite value).
@@ -98,9 +101,9 @@ class World {
     RigidBody<S> b;
     b.type = desc.type;
     b.friction = static_cast<S>(desc.friction);
-    const M3 R0 = physics_detail::rotation_of<S>(desc.pose);
-    const V3 p0 = physics_detail::translation_of<S>(desc.pose);
-    b.q = physics_detail::Quat<S>(R0).normalized();
+    const M3 R0 = detail::rotation_of<S>(desc.pose);
+    const V3 p0 = detail::translation_of<S>(desc.pose);
+    b.q = detail::Quat<S>(R0).normalized();
     b.R = b.q.toRotationMatrix();
     if (desc.type == BodyType::dynamic) {
       const MassProperties<S> mp = body_mass_properties<S>(desc.shapes, desc.mass, desc.density);
@@ -121,8 +124,8 @@ class World {
       c.spec = s;
       c.type = s.type;
       c.size = V3(static_cast<S>(s.size[0]), static_cast<S>(s.size[1]), static_cast<S>(s.size[2]));
-      c.local_R = physics_detail::rotation_of<S>(s.pose);
-      c.local_p = physics_detail::translation_of<S>(s.pose) - b.local_com;
+      c.local_R = detail::rotation_of<S>(s.pose);
+      c.local_p = detail::translation_of<S>(s.pose) - b.local_com;
       switch (s.type) {
         case ShapeType::sphere:
           c.bounding_radius = c.size[0];
@@ -188,7 +191,7 @@ class World {
     require_finite(pose.matrix(), "pose");
     RigidBody<S>& b = bodies_[static_cast<std::size_t>(body)];
     b.R = orthonormalized(pose.linear().template cast<S>());
-    b.q = physics_detail::Quat<S>(b.R).normalized();
+    b.q = detail::Quat<S>(b.R).normalized();
     b.R = b.q.toRotationMatrix();
     b.x = pose.translation().template cast<S>() + b.R * b.local_com;
     if (b.type == BodyType::dynamic) b.inv_inertia = b.R * b.inv_inertia_local * b.R.transpose();
@@ -226,7 +229,7 @@ class World {
     save_state();
     drive_kinematic(dt);
     find_contacts();
-    prepare_contacts(h);
+    prepare_contacts<S>(manifolds_, bodies_, options_, h);
     const S lin_damp = S(1) / (S(1) + h * static_cast<S>(options_.linear_damping));
     const S ang_damp = S(1) / (S(1) + h * static_cast<S>(options_.angular_damping));
     for (int sub = 0; sub < n_sub; ++sub) {
@@ -236,22 +239,17 @@ class World {
         b.v = lin_damp * (b.v + h * gravity_);
         b.w *= ang_damp;
       }
-      warm_start();
-      solve(h, true);
+      warm_start_contacts<S>(manifolds_, bodies_);
+      update_turned();
+      solve_contacts<S>(manifolds_, bodies_, turned_, options_, h, true);
       integrate_positions(h);
-      solve(h, false);
-      for (Manifold<S>& m : manifolds_)
-        for (int k = 0; k < m.count; ++k)
-          m.points[static_cast<std::size_t>(k)].step_impulse +=
-              m.points[static_cast<std::size_t>(k)].normal_impulse;
+      update_turned();
+      solve_contacts<S>(manifolds_, bodies_, turned_, options_, h, false);
+      accumulate_impulses<S>(manifolds_);
     }
     finish_kinematic();
     for (int i = 0; i < static_cast<int>(bodies_.size()); ++i) update_colliders(i);
-    for (Manifold<S>& m : manifolds_)
-      for (int k = 0; k < m.count; ++k) {
-        ContactPoint<S>& c = m.points[static_cast<std::size_t>(k)];
-        c.friction_impulse = c.tangent_impulse.x() * c.t1_now + c.tangent_impulse.y() * c.t2_now;
-      }
+    store_impulses<S>(manifolds_);
     if (!state_ok()) {
       restore_state();
       status_ = Status::numerical_issue;
@@ -264,6 +262,7 @@ class World {
 
   /// The body \p i.
   [[nodiscard]] const RigidBody<S>& body(int i) const noexcept {
+    TOPOGRASP_ASSERT(i >= 0 && i < body_count(), "body index out of range");
     return bodies_[static_cast<std::size_t>(i)];
   }
   [[nodiscard]] int body_count() const noexcept { return static_cast<int>(bodies_.size()); }
@@ -271,6 +270,7 @@ class World {
   [[nodiscard]] std::span<const Manifold<S>> manifolds() const noexcept { return manifolds_; }
   /// The shape \p i.
   [[nodiscard]] const Collider<S>& collider(int i) const noexcept {
+    TOPOGRASP_ASSERT(i >= 0 && i < collider_count(), "collider index out of range");
     return colliders_[static_cast<std::size_t>(i)];
   }
   [[nodiscard]] int collider_count() const noexcept { return static_cast<int>(colliders_.size()); }
@@ -309,6 +309,7 @@ class World {
 
   /// The shape \p i as the narrow phase sees it, at its current pose.
   [[nodiscard]] ShapeView<S> shape_view(int i) const noexcept {
+    TOPOGRASP_ASSERT(i >= 0 && i < collider_count(), "collider index out of range");
     return view(colliders_[static_cast<std::size_t>(i)]);
   }
 
@@ -322,7 +323,7 @@ class World {
   };
   struct Saved {
     V3 x = V3::Zero(), v = V3::Zero(), w = V3::Zero();
-    physics_detail::Quat<S> q = physics_detail::Quat<S>::Identity();
+    detail::Quat<S> q = detail::Quat<S>::Identity();
     M3 R = M3::Identity();
   };
 
@@ -340,7 +341,7 @@ class World {
                                                    std::to_string(body));
   }
   static M3 orthonormalized(const M3& R) noexcept {
-    return physics_detail::Quat<S>(R).normalized().toRotationMatrix();
+    return detail::Quat<S>(R).normalized().toRotationMatrix();
   }
 
   void update_colliders(int i) noexcept {
@@ -388,7 +389,7 @@ class World {
       Target& t = targets_[i];
       if (b.type != BodyType::kinematic || !t.active) continue;
       t.v = (t.p - b.x) / dt;
-      t.w = physics_detail::log_rotation<S>(M3(t.R * b.R.transpose())) / dt;
+      t.w = detail::log_rotation<S>(M3(t.R * b.R.transpose())) / dt;
     }
   }
   // The velocity of a kinematic body in sub-step s of n. The targets are samples of a smooth
@@ -418,7 +419,7 @@ class World {
         continue;
       }
       b.x = t.p;
-      b.q = physics_detail::Quat<S>(t.R).normalized();
+      b.q = detail::Quat<S>(t.R).normalized();
       b.R = b.q.toRotationMatrix();
       b.v.setZero();
       b.w.setZero();
@@ -434,256 +435,39 @@ class World {
     v.size = c.size;
     v.R = c.R;
     v.p = c.p;
+    TOPOGRASP_ASSERT(
+        (c.polytope >= 0) == (c.type == ShapeType::box || c.type == ShapeType::cylinder),
+        "boxes and cylinders, and only they, have a polytope");
     v.polytope = c.polytope >= 0 ? &polytopes_[static_cast<std::size_t>(c.polytope)] : nullptr;
     return v;
   }
 
+  // The narrow phase on every pair whose bounding spheres are within the margin, with each new
+  // point matched to the previous step's by feature id (match_contacts()).
   void find_contacts() noexcept {
     const S margin = static_cast<S>(options_.speculative_distance);
     for (Manifold<S>& m : manifolds_) {
       const Collider<S>& ca = colliders_[static_cast<std::size_t>(m.collider_a)];
       const Collider<S>& cb = colliders_[static_cast<std::size_t>(m.collider_b)];
-      // Keep the previous points' impulses for warm starting.
-      const int old_count = m.count;
-      std::array<std::uint32_t, 4> old_id{};
-      std::array<S, 4> old_normal{};
-      std::array<V3, 4> old_friction{};
-      for (int k = 0; k < old_count; ++k) {
-        const auto u = static_cast<std::size_t>(k);
-        old_id[u] = m.points[u].id;
-        old_normal[u] = m.points[u].normal_impulse;
-        old_friction[u] = m.points[u].friction_impulse;
-      }
-      m.count = 0;
       const S reach = ca.bounding_radius + cb.bounding_radius + margin;
       if ((ca.p - cb.p).squaredNorm() > reach * reach) {
+        m.count = 0;
         m.twist_impulse = S(0);
         continue;
       }
       ContactSet<S> cs;
       collide<S>(view(ca), view(cb), margin, cs);
-      m.count = cs.count;
-      if (cs.count == 0) m.twist_impulse = S(0);
-      for (int k = 0; k < cs.count; ++k) {
-        const auto u = static_cast<std::size_t>(k);
-        ContactPoint<S>& c = m.points[u];
-        const ContactFeature<S>& f = cs.points[u];
-        c.point = f.point;
-        c.normal = f.normal;
-        c.separation = f.separation;
-        c.id = f.id;
-        c.normal_impulse = S(0);
-        c.friction_impulse.setZero();
-        for (int o = 0; o < old_count; ++o)
-          if (old_id[static_cast<std::size_t>(o)] == f.id) {
-            c.normal_impulse = old_normal[static_cast<std::size_t>(o)];
-            c.friction_impulse = old_friction[static_cast<std::size_t>(o)];
-            break;
-          }
-      }
+      match_contacts<S>(m, cs);
     }
   }
 
-  void prepare_contacts(S h) noexcept {
-    // Rigid soft contacts: b2MakeSoft. With omega = 2 pi f: a1 = 2 zeta + h omega,
-    // a2 = h omega a1, a3 = 1 / (1 + a2); bias rate omega / a1, mass scale a2 a3, impulse scale a3.
-    const S pi_s = static_cast<S>(pi);
-    const S hertz = std::min(static_cast<S>(options_.contact_hertz), S(0.25) / h);
-    const S omega = S(2) * pi_s * hertz, zeta = static_cast<S>(options_.contact_damping_ratio);
-    const S a1 = S(2) * zeta + h * omega, a2 = h * omega * a1, a3 = S(1) / (S(1) + a2);
-    const S rigid_bias = omega / a1, rigid_mass = a2 * a3, rigid_impulse = a3;
-    const S k_hand = static_cast<S>(options_.hand_stiffness);
-    const S zeta_hand = static_cast<S>(options_.hand_damping_ratio);
-    const S torsion = static_cast<S>(options_.torsional_friction_radius);
-    for (Manifold<S>& m : manifolds_) {
-      if (m.count == 0) continue;
-      const RigidBody<S>& A = bodies_[static_cast<std::size_t>(m.body_a)];
-      const RigidBody<S>& B = bodies_[static_cast<std::size_t>(m.body_b)];
-      const S mA = A.inv_mass, mB = B.inv_mass;
-      const M3& iA = A.inv_inertia;
-      const M3& iB = B.inv_inertia;
-      V3 axis = V3::Zero();
-      for (int k = 0; k < m.count; ++k) {
-        ContactPoint<S>& c = m.points[static_cast<std::size_t>(k)];
-        const V3& n = c.normal;
-        axis += n;
-        c.anchor_a = c.point - A.x;
-        c.anchor_b = c.point - B.x;
-        c.local_a = A.R.transpose() * c.anchor_a;
-        c.local_b = B.R.transpose() * c.anchor_b;
-        const V3 rnA = c.anchor_a.cross(n), rnB = c.anchor_b.cross(n);
-        const S kn = mA + mB + rnA.dot(iA * rnA) + rnB.dot(iB * rnB);
-        c.normal_mass = kn > S(0) ? S(1) / kn : S(0);
-        physics_detail::tangent_basis<S>(n, c.t1, c.t2);
-        const V3 a1v = c.anchor_a.cross(c.t1), a2v = c.anchor_a.cross(c.t2);
-        const V3 b1v = c.anchor_b.cross(c.t1), b2v = c.anchor_b.cross(c.t2);
-        Eigen::Matrix<S, 2, 2> K;
-        K(0, 0) = mA + mB + a1v.dot(iA * a1v) + b1v.dot(iB * b1v);
-        K(1, 1) = mA + mB + a2v.dot(iA * a2v) + b2v.dot(iB * b2v);
-        K(0, 1) = K(1, 0) = a1v.dot(iA * a2v) + b1v.dot(iB * b2v);
-        const S det = K.determinant();
-        c.tangent_mass =
-            det > S(0) ? Eigen::Matrix<S, 2, 2>(K.inverse()) : Eigen::Matrix<S, 2, 2>::Zero();
-        c.tangent_mass_iso = K.trace() > S(0) ? S(2) / K.trace() : S(0);
-        c.tangent_impulse =
-            Eigen::Matrix<S, 2, 1>(c.friction_impulse.dot(c.t1), c.friction_impulse.dot(c.t2));
-        c.step_impulse = S(0);
-        c.ra = c.anchor_a;
-        c.rb = c.anchor_b;
-        c.n_now = n;
-        c.t1_now = c.t1;
-        c.t2_now = c.t2;
-        if (m.hand && k_hand > S(0)) {
-          // Physical spring-damper (Catto, "Soft constraints", GDC 2011): with stiffness k and
-          // damping c = 2 zeta sqrt(k m_eff), gamma = 1 / (h (c + h k)) and bias rate
-          // k / (c + h k); at rest the accumulated impulse per sub-step is k d h, a force k d.
-          const S kp = k_hand / static_cast<S>(m.count);
-          const S meff = c.normal_mass;
-          const S damping = S(2) * zeta_hand * std::sqrt(kp * meff);
-          const S gamma = S(1) / (h * (damping + h * kp));
-          c.bias_rate = kp / (damping + h * kp);
-          c.mass_scale = S(1) / (S(1) + meff * gamma);
-          c.impulse_scale = meff * gamma * c.mass_scale;
-          c.max_push = static_cast<S>(options_.hand_push_max_speed);
-        } else {
-          c.bias_rate = rigid_bias;
-          c.mass_scale = rigid_mass;
-          c.impulse_scale = rigid_impulse;
-          c.max_push = static_cast<S>(options_.contact_push_max_speed);
-        }
-      }
-      m.twist_mass = S(0);
-      if (m.hand && torsion > S(0) && axis.squaredNorm() > S(1e-12)) {
-        m.twist_axis = axis.normalized();
-        m.twist_axis_now = m.twist_axis;
-        const S kt = m.twist_axis.dot(iA * m.twist_axis) + m.twist_axis.dot(iB * m.twist_axis);
-        if (kt > S(0)) m.twist_mass = S(1) / kt;
-      }
-      if (m.twist_mass == S(0)) m.twist_impulse = S(0);
-    }
-  }
-
-  static void apply(RigidBody<S>& b, const V3& impulse, const V3& r) noexcept {
-    if (b.type != BodyType::dynamic) return;
-    b.v += b.inv_mass * impulse;
-    b.w += b.inv_inertia * r.cross(impulse);
-  }
-
-  void warm_start() noexcept {
-    for (Manifold<S>& m : manifolds_) {
-      if (m.count == 0) continue;
-      RigidBody<S>& A = bodies_[static_cast<std::size_t>(m.body_a)];
-      RigidBody<S>& B = bodies_[static_cast<std::size_t>(m.body_b)];
-      for (int k = 0; k < m.count; ++k) {
-        const ContactPoint<S>& c = m.points[static_cast<std::size_t>(k)];
-        const V3 P = c.normal_impulse * c.n_now + c.tangent_impulse.x() * c.t1_now +
-                     c.tangent_impulse.y() * c.t2_now;
-        apply(A, -P, c.ra);
-        apply(B, P, c.rb);
-      }
-      if (m.twist_mass > S(0)) {
-        const V3 L = m.twist_impulse * m.twist_axis_now;
-        if (A.type == BodyType::dynamic) A.w -= A.inv_inertia * L;
-        if (B.type == BodyType::dynamic) B.w += B.inv_inertia * L;
-      }
-    }
-  }
-
-  void solve(S h, bool use_bias) noexcept {
-    const S inv_h = S(1) / h;
-    // How far each body has turned since the step began.
+  // How far each body has turned since the step began (the contact solver's frame rotation).
+  void update_turned() noexcept {
+    TOPOGRASP_ASSERT(turned_.size() == bodies_.size() && saved_.size() == bodies_.size(),
+                     "one scratch rotation and one saved state per body");
     for (std::size_t i = 0; i < bodies_.size(); ++i)
       turned_[i] = bodies_[i].type == BodyType::fixed ? M3::Identity()
                                                       : M3(bodies_[i].R * saved_[i].R.transpose());
-    for (Manifold<S>& m : manifolds_) {
-      if (m.count == 0) continue;
-      RigidBody<S>& A = bodies_[static_cast<std::size_t>(m.body_a)];
-      RigidBody<S>& B = bodies_[static_cast<std::size_t>(m.body_b)];
-      // The contact frame turns with body A, and the anchors with their bodies, so that a grasp
-      // turning by several degrees a step keeps consistent contact velocities.
-      const M3& dR = turned_[static_cast<std::size_t>(m.body_a)];
-      const S mu = m.friction;
-      // Velocities in registers; inverse masses are zero for kinematic and fixed bodies.
-      V3 vA = A.v, wA = A.w, vB = B.v, wB = B.w;
-      const S mA = A.inv_mass, mB = B.inv_mass;
-      const M3& iA = A.inv_inertia;
-      const M3& iB = B.inv_inertia;
-      const auto push = [&](const ContactPoint<S>& c, const V3& P) {
-        vA -= mA * P;
-        wA -= iA * c.ra.cross(P);
-        vB += mB * P;
-        wB += iB * c.rb.cross(P);
-      };
-      S total = S(0);
-      for (int k = 0; k < m.count; ++k) {
-        ContactPoint<S>& c = m.points[static_cast<std::size_t>(k)];
-        c.ra = A.R * c.local_a;
-        c.rb = B.R * c.local_b;
-        c.n_now = dR * c.normal;
-        // Current separation: the two anchors started at the same point, so their gap along the
-        // (turned) normal adds to the separation found by the narrow phase.
-        const S s = (B.x + c.rb - A.x - c.ra).dot(c.n_now) + c.separation;
-        S bias = S(0), mass_scale = S(1), impulse_scale = S(0);
-        if (s > S(0)) {
-          bias = s * inv_h;  // speculative: allow the gap to close, no more
-        } else if (use_bias) {
-          bias = std::max(c.bias_rate * s, -c.max_push);
-          mass_scale = c.mass_scale;
-          impulse_scale = c.impulse_scale;
-        }
-        const V3 dv = vB + wB.cross(c.rb) - vA - wA.cross(c.ra);
-        const S vn = dv.dot(c.n_now);
-        const S impulse =
-            -c.normal_mass * mass_scale * (vn + bias) - impulse_scale * c.normal_impulse;
-        const S next = std::max(c.normal_impulse + impulse, S(0));
-        const S d = next - c.normal_impulse;
-        c.normal_impulse = next;
-        total += next;
-        push(c, V3(d * c.n_now));
-      }
-      // Friction after the normal impulses, limited by them (the order of Box2D v3: with soft
-      // contacts, the biased solve lowers the normal impulse that the relax pass restores).
-      for (int k = 0; k < m.count; ++k) {
-        ContactPoint<S>& c = m.points[static_cast<std::size_t>(k)];
-        c.t1_now = dR * c.t1;
-        c.t2_now = dR * c.t2;
-        const V3 dv = vB + wB.cross(c.rb) - vA - wA.cross(c.ra);
-        const Eigen::Matrix<S, 2, 1> vt(dv.dot(c.t1_now), dv.dot(c.t2_now));
-        Eigen::Matrix<S, 2, 1> next = c.tangent_impulse - c.tangent_mass * vt;
-        // Circular cone: |friction| <= mu * normal. Sticking uses the full 2x2 effective mass;
-        // when sliding, its off-diagonal coupling would turn the impulse away from the slip, so
-        // the direction comes from an isotropic mass and the length from the cone.
-        const S limit = mu * c.normal_impulse;
-        if (next.squaredNorm() > limit * limit) {
-          next = c.tangent_impulse - c.tangent_mass_iso * vt;
-          const S len = next.norm();
-          next *= len > S(0) ? limit / len : S(0);
-        }
-        const Eigen::Matrix<S, 2, 1> d = next - c.tangent_impulse;
-        c.tangent_impulse = next;
-        push(c, V3(d.x() * c.t1_now + d.y() * c.t2_now));
-      }
-      if (m.twist_mass > S(0)) {
-        // Torsional friction: |torque impulse| <= mu * radius * normal impulse.
-        m.twist_axis_now = dR * m.twist_axis;
-        const S limit = mu * static_cast<S>(options_.torsional_friction_radius) * total;
-        const S wn = (wB - wA).dot(m.twist_axis_now);
-        const S next = physics_detail::clamp<S>(m.twist_impulse - m.twist_mass * wn, -limit, limit);
-        const S d = next - m.twist_impulse;
-        m.twist_impulse = next;
-        const V3 L = d * m.twist_axis_now;
-        wA -= iA * L;
-        wB += iB * L;
-      }
-      if (A.type == BodyType::dynamic) {
-        A.v = vA;
-        A.w = wA;
-      }
-      if (B.type == BodyType::dynamic) {
-        B.v = vB;
-        B.w = wB;
-      }
-    }
   }
 
   void integrate_positions(S h) noexcept {
@@ -691,7 +475,7 @@ class World {
       if (b.type == BodyType::fixed) continue;
       b.x += h * b.v;
       if (b.w.squaredNorm() > S(0)) {
-        b.q = (physics_detail::exp_rotation<S>(V3(h * b.w)) * b.q).normalized();
+        b.q = (detail::exp_rotation<S>(V3(h * b.w)) * b.q).normalized();
         b.R = b.q.toRotationMatrix();
         if (b.type == BodyType::dynamic)
           b.inv_inertia = b.R * b.inv_inertia_local * b.R.transpose();

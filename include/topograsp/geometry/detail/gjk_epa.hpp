@@ -287,7 +287,7 @@ inline bool epa(const Primitive& A, const Primitive& B, Simplex s, double& depth
   }
   if (nv == 2) {
     const Vec3 u = (W(1) - W(0)).normalized();
-    const Vec3 e1 = any_perpendicular(u), e2 = u.cross(e1);
+    const Vec3 e1 = any_perpendicular<double>(u), e2 = u.cross(e1);
     bool added = false;
     for (int k = 0; k < 6 && !added; ++k) {
       const double t = pi * k / 6.0;

@@ -1,19 +1,18 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
-/// Small fixed-size helpers of the physics module, templated over the scalar type (internal).
+/// Small fixed-size helpers of the physics module, templated over the scalar type (internal):
+/// rotations. The vector types V3, M3, clamp() and the closest-point kernel come from
+/// geometry/detail/closest.hpp.
 #pragma once
 
 #include <cmath>
 
 #include <topograsp/core/eigen.hpp>
 #include <topograsp/core/pose.hpp>
+#include <topograsp/geometry/detail/closest.hpp>
 
-namespace topograsp::physics_detail {
+namespace topograsp::detail {
 
-template <class S>
-using V3 = Eigen::Matrix<S, 3, 1>;
-template <class S>
-using M3 = Eigen::Matrix<S, 3, 3>;
 template <class S>
 using Quat = Eigen::Quaternion<S>;
 
@@ -27,17 +26,6 @@ template <class S>
 template <class S>
 [[nodiscard]] V3<S> translation_of(const Pose& p) noexcept {
   return p.translation().template cast<S>();
-}
-
-/// Two unit vectors t1, t2 with (t1, t2, n) right-handed and orthonormal, a deterministic function
-/// of the unit vector n (Duff et al. 2017, "Building an orthonormal basis, revisited").
-template <class S>
-void tangent_basis(const V3<S>& n, V3<S>& t1, V3<S>& t2) noexcept {
-  const S sign = std::copysign(S(1), n.z());
-  const S a = S(-1) / (sign + n.z());
-  const S b = n.x() * n.y() * a;
-  t1 = V3<S>(S(1) + sign * n.x() * n.x() * a, sign * b, -sign * n.x());
-  t2 = V3<S>(b, sign + n.y() * n.y() * a, -n.y());
 }
 
 /// The unit quaternion of the rotation by the rotation vector \p v (angle |v| about v / |v|).
@@ -73,54 +61,4 @@ template <class S>
   return std::atan2(S(0.5) * axial.norm(), c);
 }
 
-/// Clamps x into [lo, hi].
-template <class S>
-[[nodiscard]] constexpr S clamp(S x, S lo, S hi) noexcept {
-  return x < lo ? lo : (x > hi ? hi : x);
-}
-
-/// The parameters (s, t) in [0, 1]^2 of the closest points a0 + s (a1 - a0) and b0 + t (b1 - b0)
-/// of two segments (either may have zero length). For parallel segments, s is the middle of the
-/// overlap of A with the projection of B (so the answer is a symmetric, stable choice).
-template <class S>
-void closest_segment_params(const V3<S>& a0, const V3<S>& a1, const V3<S>& b0, const V3<S>& b1,
-                            S& s, S& t) noexcept {
-  const V3<S> d1 = a1 - a0, d2 = b1 - b0, r = a0 - b0;
-  const S a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
-  const S eps = S(1e-18);
-  if (a <= eps && e <= eps) {
-    s = t = S(0);
-    return;
-  }
-  if (a <= eps) {
-    s = S(0);
-    t = clamp(f / e, S(0), S(1));
-    return;
-  }
-  const S c = d1.dot(r);
-  if (e <= eps) {
-    t = S(0);
-    s = clamp(-c / a, S(0), S(1));
-    return;
-  }
-  const S b = d1.dot(d2);
-  const S denom = a * e - b * b;
-  if (denom > S(1e-10) * a * e) {
-    s = clamp((b * f - c * e) / denom, S(0), S(1));
-  } else {
-    // Parallel: the middle of the part of A that faces B.
-    const S u0 = clamp(-c / a, S(0), S(1));
-    const S u1 = clamp((d2.dot(d1) - c) / a, S(0), S(1));
-    s = S(0.5) * (u0 + u1);
-  }
-  t = (b * s + f) / e;
-  if (t < S(0)) {
-    t = S(0);
-    s = clamp(-c / a, S(0), S(1));
-  } else if (t > S(1)) {
-    t = S(1);
-    s = clamp((b - c) / a, S(0), S(1));
-  }
-}
-
-}  // namespace topograsp::physics_detail
+}  // namespace topograsp::detail
