@@ -4,10 +4,7 @@
 /// sweep relinearises a step) and AicoOptions (every numeric parameter, with its default).
 #pragma once
 
-#include <array>
 #include <string_view>
-
-#include <topograsp/aico/detail/enum_names.hpp>
 
 namespace topograsp {
 
@@ -32,12 +29,24 @@ enum class SweepMode {
 
 /// "dynamic" or "kinematic".
 [[nodiscard]] constexpr std::string_view to_string(AicoMode m) noexcept {
-  return detail::enum_name(m, std::array<std::string_view, 2>{"dynamic", "kinematic"});
+  switch (m) {
+    case AicoMode::dynamic:
+      return "dynamic";
+    case AicoMode::kinematic:
+      return "kinematic";
+  }
+  return "unknown";
 }
 
 /// "symmetric" or "local_gauss_newton".
 [[nodiscard]] constexpr std::string_view to_string(SweepMode m) noexcept {
-  return detail::enum_name(m, std::array<std::string_view, 2>{"symmetric", "local_gauss_newton"});
+  switch (m) {
+    case SweepMode::symmetric:
+      return "symmetric";
+    case SweepMode::local_gauss_newton:
+      return "local_gauss_newton";
+  }
+  return "unknown";
 }
 
 /// The parameters of an AICO solve (docs/aico.md, "Parameters"). Every field has a usable default;

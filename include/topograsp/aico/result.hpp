@@ -4,11 +4,9 @@
 /// AicoSweepRecord (what one sweep did) and AicoResult (the trajectory, costs and log).
 #pragma once
 
-#include <array>
 #include <string_view>
 #include <vector>
 
-#include <topograsp/aico/detail/enum_names.hpp>
 #include <topograsp/core/eigen.hpp>
 #include <topograsp/core/status.hpp>
 
@@ -26,9 +24,21 @@ enum class AicoTermination {
 
 /// A short lower-case name for \p t ("step_tolerance", ...).
 [[nodiscard]] constexpr std::string_view to_string(AicoTermination t) noexcept {
-  return detail::enum_name(
-      t, std::array<std::string_view, 6>{"step_tolerance", "cost_tolerance", "max_sweeps",
-                                         "max_rejections", "non_finite", "factorisation"});
+  switch (t) {
+    case AicoTermination::step_tolerance:
+      return "step_tolerance";
+    case AicoTermination::cost_tolerance:
+      return "cost_tolerance";
+    case AicoTermination::max_sweeps:
+      return "max_sweeps";
+    case AicoTermination::max_rejections:
+      return "max_rejections";
+    case AicoTermination::non_finite:
+      return "non_finite";
+    case AicoTermination::factorisation:
+      return "factorisation";
+  }
+  return "unknown";
 }
 
 /// The Status a termination reason maps to: success for the two tolerances, no_convergence when

@@ -16,7 +16,6 @@
 #include <utility>
 #include <vector>
 
-#include <topograsp/aico/detail/enum_names.hpp>
 #include <topograsp/aico/detail/task_parts.hpp>
 #include <topograsp/aico/problem.hpp>
 #include <topograsp/aico/result.hpp>
@@ -39,7 +38,13 @@ enum class TopologicalMode {
 
 /// "direct" or "coupled".
 [[nodiscard]] constexpr std::string_view to_string(TopologicalMode m) noexcept {
-  return detail::enum_name(m, std::array<std::string_view, 2>{"direct", "coupled"});
+  switch (m) {
+    case TopologicalMode::direct:
+      return "direct";
+    case TopologicalMode::coupled:
+      return "coupled";
+  }
+  return "unknown";
 }
 
 /// The parameters of the topological layer (solve_topological()), with their defaults.
