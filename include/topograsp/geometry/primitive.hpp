@@ -80,8 +80,7 @@ struct BasicPrimitive {
                                                double half_height) {
     require_finite(pose.matrix(), "pose");
     require_positive(radius, "radius");
-    require_finite(half_height, "half_height");
-    if (half_height < 0.0) detail::throw_invalid_argument("half_height", "expected a number >= 0");
+    require_non_negative(half_height, "half_height");
     BasicPrimitive s;
     s.type = ShapeType::cylinder;
     s.R = pose.linear();

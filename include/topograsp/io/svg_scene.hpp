@@ -411,18 +411,14 @@ class SvgScene {
     if (!(c.up.norm() > 1e-12) ||
         !(c.direction.normalized().cross(c.up.normalized()).norm() > 1e-6))
       detail::throw_invalid_argument("camera.up", "expected a vector not along the direction");
-    require_finite(c.zoom, "camera.zoom");
-    if (c.zoom < 0.0) detail::throw_invalid_argument("camera.zoom", "expected zoom >= 0");
+    require_non_negative(c.zoom, "camera.zoom");
     if (c.width < 16) detail::throw_invalid_argument("camera.width", "expected at least 16 px");
     if (c.height < 16) detail::throw_invalid_argument("camera.height", "expected at least 16 px");
     if (c.target) require_finite(*c.target, "camera.target");
     if (c.segments < 4 || c.segments > 128)
       detail::throw_invalid_argument("camera.segments", "expected 4 to 128 segments");
-    require_finite(c.margin, "camera.margin");
-    if (c.margin < 0.0) detail::throw_invalid_argument("camera.margin", "expected margin >= 0");
-    require_finite(c.max_edge, "camera.max_edge");
-    if (c.max_edge < 0.0)
-      detail::throw_invalid_argument("camera.max_edge", "expected max_edge >= 0");
+    require_non_negative(c.margin, "camera.margin");
+    require_non_negative(c.max_edge, "camera.max_edge");
     require_finite(c.light, "camera.light");
     if (!(c.light.norm() > 1e-12))
       detail::throw_invalid_argument("camera.light", "expected a nonzero direction");

@@ -59,8 +59,7 @@ struct PrecisionSchedule {
 /// The same precision \p rho at every step.
 /// \throws topograsp::invalid_argument naming "precision" unless 0 <= rho < infinity.
 [[nodiscard]] inline PrecisionSchedule constant_precision(double rho) {
-  require_finite(rho, "precision");
-  if (rho < 0.0) detail::throw_invalid_argument("precision", "expected a number >= 0");
+  require_non_negative(rho, "precision");
   return {rho, rho};
 }
 
