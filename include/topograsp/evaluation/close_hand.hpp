@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <type_traits>
 #include <vector>
 
 #include <topograsp/core/constants.hpp>
@@ -91,8 +92,9 @@ CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options
     for (std::size_t l = 0; l < ModelType::n_links; ++l) {
       const int b = scene.link_body(static_cast<int>(l));
       if (!after[static_cast<std::size_t>(i)][l] || b < 0) continue;
-      const Mat3 Rl = hand.linear() * kin.R[l];
-      const Vec3 pl = hand * kin.p[l];
+      const Eigen::Isometry3d Tl = hand * link_pose(kin, static_cast<int>(l));
+      const Mat3 Rl = Tl.linear();
+      const Vec3 pl = Tl.translation();
       const RigidBody<S>& body = world.body(b);
       for (int c = body.first_collider; c < body.first_collider + body.n_colliders; ++c) {
         ShapeView<S> v = world.shape_view(c);
