@@ -4,7 +4,8 @@
 /// then every sub-step warm_start_contacts(), solve_contacts() with the soft bias, (positions
 /// integrated by World) and solve_contacts() without it (relax), accumulate_impulses(); at the
 /// end of the step store_impulses(). Free functions over the manifolds and bodies of a World;
-/// World::step() sequences them. None allocates.
+/// World::step() sequences them. None allocates. Internal (topograsp::detail): the manifolds and
+/// bodies they take are the World's own, whose invariants TOPOGRASP_ASSERT checks.
 #pragma once
 
 #include <algorithm>
@@ -19,7 +20,7 @@
 #include <topograsp/physics/rigid_body.hpp>
 #include <topograsp/physics/stepper_options.hpp>
 
-namespace topograsp {
+namespace topograsp::detail {
 
 /// Stage 1, once a step, after the narrow phase: for every touching manifold, the anchors (world
 /// and body axes), the normal and tangent effective masses, the tangent basis, the softness of
@@ -275,4 +276,4 @@ void store_impulses(std::span<Manifold<S>> manifolds) noexcept {
     }
 }
 
-}  // namespace topograsp
+}  // namespace topograsp::detail

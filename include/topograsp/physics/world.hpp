@@ -4,7 +4,6 @@
 /// soft-step solver with warm starting, circular friction cones and torsional friction.
 #pragma once
 
-#include <algorithm>
 #include <cmath>
 #include <span>
 #include <string>
@@ -229,7 +228,7 @@ class World {
     save_state();
     drive_kinematic(dt);
     find_contacts();
-    prepare_contacts<S>(manifolds_, bodies_, options_, h);
+    detail::prepare_contacts<S>(manifolds_, bodies_, options_, h);
     const S lin_damp = S(1) / (S(1) + h * static_cast<S>(options_.linear_damping));
     const S ang_damp = S(1) / (S(1) + h * static_cast<S>(options_.angular_damping));
     for (int sub = 0; sub < n_sub; ++sub) {
@@ -239,17 +238,17 @@ class World {
         b.v = lin_damp * (b.v + h * gravity_);
         b.w *= ang_damp;
       }
-      warm_start_contacts<S>(manifolds_, bodies_);
+      detail::warm_start_contacts<S>(manifolds_, bodies_);
       update_turned();
-      solve_contacts<S>(manifolds_, bodies_, turned_, options_, h, true);
+      detail::solve_contacts<S>(manifolds_, bodies_, turned_, options_, h, true);
       integrate_positions(h);
       update_turned();
-      solve_contacts<S>(manifolds_, bodies_, turned_, options_, h, false);
-      accumulate_impulses<S>(manifolds_);
+      detail::solve_contacts<S>(manifolds_, bodies_, turned_, options_, h, false);
+      detail::accumulate_impulses<S>(manifolds_);
     }
     finish_kinematic();
     for (int i = 0; i < static_cast<int>(bodies_.size()); ++i) update_colliders(i);
-    store_impulses<S>(manifolds_);
+    detail::store_impulses<S>(manifolds_);
     if (!state_ok()) {
       restore_state();
       status_ = Status::numerical_issue;

@@ -3,7 +3,6 @@
 /// Internals of the SVG and HTML writers: fixed number formatting, XML escaping, file output.
 #pragma once
 
-#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <string>

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include <topograsp/geometry/detail/closest.hpp>
+#include <topograsp/geometry/primitive.hpp>
 #include <topograsp/model/spec.hpp>
 #include <topograsp/physics/contact_set.hpp>
 
@@ -22,15 +23,11 @@ namespace topograsp::detail {
 template <class S>
 void collide_rounded_rounded(const ShapeView<S>& A, const ShapeView<S>& B, S margin,
                              ContactSet<S>& out) noexcept {
-  V3<S> a0, a1, b0, b1;
-  S ra, rb;
+  V3<S> a0, a1, b0, b1, pa, pb;
   core_segment<S>(A, a0, a1);
   core_segment<S>(B, b0, b1);
-  ra = A.size[0];
-  rb = B.size[0];
-  S s, t;
-  closest_segment_params<S>(a0, a1, b0, b1, s, t);
-  const V3<S> pa = a0 + s * (a1 - a0), pb = b0 + t * (b1 - b0);
+  const S ra = A.size[0], rb = B.size[0];
+  closest_segment_points<S>(a0, a1, b0, b1, pa, pb);
   const V3<S> d = pb - pa;
   const S dist = d.norm();
   if (dist > ra + rb + margin) return;
