@@ -4,11 +4,13 @@
 /// hand randomly (seeded) for 100 steps, check the object is still held.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string_view>
 
 #include <topograsp/core/constants.hpp>
+#include <topograsp/core/random.hpp>
 #include <topograsp/evaluation/hand_scene.hpp>
 
 namespace topograsp {
@@ -60,20 +62,6 @@ struct ShakeResult {
 };
 
 namespace detail {
-
-// SplitMix64 (Steele, Lea, Flood 2014): a tiny seeded generator that is the same everywhere
-// (the distributions of <random> are not).
-struct SplitMix64 {
-  std::uint64_t state;
-  std::uint64_t next() noexcept {
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
-  /// Uniform in [0, 1).
-  double uniform() noexcept { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-};
 
 // Displacement and rotation of the object in the hand frame since `reference`.
 inline void object_motion(const Eigen::Isometry3d& reference, const Eigen::Isometry3d& now,

@@ -16,6 +16,7 @@
 #include <thread>
 #include <vector>
 
+#include <topograsp/core/random.hpp>
 #include <topograsp/grasp/transfer.hpp>
 
 namespace topograsp {
@@ -59,12 +60,9 @@ struct ObjectResult {
 /// demonstration): a SplitMix64 mix, so results do not depend on the order or the threads.
 [[nodiscard]] inline std::uint64_t grasp_seed(std::uint64_t seed, std::size_t object, int id,
                                               int method) noexcept {
-  std::uint64_t z = seed ^ (0x9e3779b97f4a7c15ull * (object + 1)) ^
-                    (0xbf58476d1ce4e5b9ull * static_cast<std::uint64_t>(id + 1)) ^
-                    (0x94d049bb133111ebull * static_cast<std::uint64_t>(method + 2));
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-  return z ^ (z >> 31);
+  return detail::splitmix64_mix(seed ^ (0x9e3779b97f4a7c15ull * (object + 1)) ^
+                                (0xbf58476d1ce4e5b9ull * static_cast<std::uint64_t>(id + 1)) ^
+                                (0x94d049bb133111ebull * static_cast<std::uint64_t>(method + 2)));
 }
 
 namespace detail {

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// SplitMix64 (Steele, Lea, Flood 2014): the library's one seeded generator, the same on every
+/// platform (the distributions of <random> are not), and its mixing function, which also turns a
+/// grasp's identity into a seed (internal).
+#pragma once
+
+#include <cstdint>
+
+namespace topograsp::detail {
+
+/// The SplitMix64 finaliser: a bijective mix of the 64 bits of \p z.
+[[nodiscard]] constexpr std::uint64_t splitmix64_mix(std::uint64_t z) noexcept {
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+
+/// The SplitMix64 generator over a 64-bit state.
+struct SplitMix64 {
+  std::uint64_t state;
+  /// The next 64 random bits.
+  constexpr std::uint64_t next() noexcept { return splitmix64_mix(state += 0x9e3779b97f4a7c15ull); }
+  /// Uniform in [0, 1).
+  constexpr double uniform() noexcept { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+};
+
+}  // namespace topograsp::detail
