@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
 
   try {
     const auto r = solve_topological<robot>(base, windings, goal, home, options, topology);
-    std::printf("AICO, dynamic mode, T = %d, %s topology targets, goal windings (%.3f, %.3f)\n",
+    std::printf("AICO, dynamic mode, T = %d, %s topological targets, goal windings (%.3f, %.3f)\n",
                 options.steps, to_string(topology.mode).data(), goal[0], goal[1]);
     std::printf("%6s %14s %12s %10s %9s\n", "sweep", "cost", "damping", "time (ms)", "accepted");
     for (std::size_t k = 0; k < r.aico.sweep_log.size(); ++k) {

@@ -10,6 +10,7 @@
 #include <topograsp/model/models.hpp>
 
 #include "stacks.hpp"
+#include "support/throws.hpp"
 
 namespace {
 
@@ -166,48 +167,41 @@ TEST_CASE("bad input throws invalid_argument naming the argument", "[aico][input
   using Problem = AicoProblem<arm, ArmReach>;
   const ArmReach stack;
   const Vec<arm.nq> q0 = Vec<arm.nq>::Zero();
-  const auto throws_naming = [](auto&& make, const std::string& name) {
-    try {
-      make();
-      FAIL("no exception for " << name);
-    } catch (const topograsp::invalid_argument& e) {
-      CHECK(std::string(e.what()).rfind(name, 0) == 0);
-    }
-  };
   Vec<arm.nq> nan_q = q0;
   nan_q[3] = std::nan("");
-  throws_naming([&] { Problem p(stack, nan_q); }, "q_start");
-  throws_naming([&] { Problem p(stack, VecX::Zero(3)); }, "q_start");
+  test::check_throws_naming([&] { Problem p(stack, nan_q); }, "q_start");
+  test::check_throws_naming([&] { Problem p(stack, VecX::Zero(3)); }, "q_start");
   AicoOptions o;
   o.steps = 0;
-  throws_naming([&] { Problem p(stack, q0, o); }, "options.steps");
+  test::check_throws_naming([&] { Problem p(stack, q0, o); }, "options.steps");
   o = {};
   o.control_precision = 0.0;
-  throws_naming([&] { Problem p(stack, q0, o); }, "options.control_precision");
+  test::check_throws_naming([&] { Problem p(stack, q0, o); }, "options.control_precision");
   o = {};
   o.control_precision = -1.0;
-  throws_naming([&] { Problem p(stack, q0, o); }, "options.control_precision");
+  test::check_throws_naming([&] { Problem p(stack, q0, o); }, "options.control_precision");
   o = {};
   o.process_noise = 0.0;
-  throws_naming([&] { Problem p(stack, q0, o); }, "options.process_noise");
+  test::check_throws_naming([&] { Problem p(stack, q0, o); }, "options.process_noise");
   o = {};
   o.duration = std::nan("");
-  throws_naming([&] { Problem p(stack, q0, o); }, "options.duration");
+  test::check_throws_naming([&] { Problem p(stack, q0, o); }, "options.duration");
   o = {};
   o.tolerance = -1e-3;
-  throws_naming([&] { Problem p(stack, q0, o); }, "options.tolerance");
+  test::check_throws_naming([&] { Problem p(stack, q0, o); }, "options.tolerance");
   o = {};
   o.damping = -1.0;
-  throws_naming([&] { Problem p(stack, q0, o); }, "options.damping");
+  test::check_throws_naming([&] { Problem p(stack, q0, o); }, "options.damping");
   // A warm start of the wrong length or with a NaN.
   o = {};
   o.steps = 10;
   Problem p(stack, q0, o);
   AicoWorkspace ws(p);
-  throws_naming([&] { (void)solve(p, ws, std::vector<Vec<arm.nq>>(5, q0)); }, "initial");
+  test::check_throws_naming([&] { (void)solve(p, ws, std::vector<Vec<arm.nq>>(5, q0)); },
+                            "initial");
   std::vector<Vec<arm.nq>> bad(11, q0);
   bad[4] = nan_q;
-  throws_naming([&] { (void)solve(p, ws, bad); }, "initial");
+  test::check_throws_naming([&] { (void)solve(p, ws, bad); }, "initial");
 }
 
 TEST_CASE("a task turning non-finite ends the solve with a status, not NaNs", "[aico][input]") {

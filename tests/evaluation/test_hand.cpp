@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include <catch2/catch.hpp>
+#include "support/throws.hpp"
 
 using namespace topograsp;
 using test::cylinder_object;
@@ -50,7 +51,7 @@ void check_closing(const Vec<M.nq>& q, const Eigen::Vector3d& centre, const Eige
 }  // namespace
 
 TEST_CASE("closing each shipped hand on a cylinder stops every finger at contact",
-          "[physics][close]") {
+          "[evaluation][close]") {
   SECTION("Schunk SDH") {
     Vec<7> q;
     q << 0.0, -0.6, 0.2, -0.6, 0.2, -0.6, 0.2;
@@ -67,7 +68,7 @@ TEST_CASE("closing each shipped hand on a cylinder stops every finger at contact
   }
 }
 
-TEST_CASE("a firm grasp passes the shake test and a slippery one fails it", "[physics][shake]") {
+TEST_CASE("a firm grasp passes the shake test and a slippery one fails it", "[evaluation][shake]") {
   SECTION("mu = 1 holds") {
     auto scene = test::sdh_bottle_scene(1.0);
     REQUIRE(close_hand(scene).status == Status::success);
@@ -93,7 +94,7 @@ TEST_CASE("a firm grasp passes the shake test and a slippery one fails it", "[ph
 }
 
 TEST_CASE("the six-gravity-direction test holds a firm grasp and leaves the scene alone",
-          "[physics][shake]") {
+          "[evaluation][shake]") {
   auto scene = test::sdh_bottle_scene(1.0);
   REQUIRE(close_hand(scene).status == Status::success);
   const Eigen::Isometry3d before = scene.object_pose();
@@ -111,7 +112,7 @@ TEST_CASE("the six-gravity-direction test holds a firm grasp and leaves the scen
   CHECK_FALSE(gravity_test(slippery).stable);
 }
 
-TEST_CASE("shakes are random but reproducible", "[physics][shake][determinism]") {
+TEST_CASE("shakes are random but reproducible", "[evaluation][shake][determinism]") {
   auto a = test::sdh_bottle_scene(1.0);
   REQUIRE(close_hand(a).status == Status::success);
   auto b = a, c = a;
@@ -132,70 +133,61 @@ TEST_CASE("shakes are random but reproducible", "[physics][shake][determinism]")
   CHECK(ra.translation != rc.translation);
 }
 
-TEST_CASE("bad input to the scene and the tests throws naming the argument", "[physics][input]") {
+TEST_CASE("bad input to the scene and the tests throws naming the argument",
+          "[evaluation][input]") {
   const Eigen::Isometry3d hand = Eigen::Isometry3d::Identity();
   const Vec<7> q = Vec<7>::Zero();
-  const auto throws_with = [](auto&& f, const std::string& name) {
-    try {
-      f();
-    } catch (const topograsp::invalid_argument& e) {
-      INFO(e.what());
-      CHECK(std::string(e.what()).rfind(name, 0) == 0);
-      return;
-    }
-    FAIL("no topograsp::invalid_argument for " << name);
-  };
   ObjectSpec good = cylinder_object(hand, {0, 0, 0.16}, Eigen::Vector3d::UnitY(), 0.03, 0.05, 0.2);
-  throws_with(
+  test::check_throws_naming(
       [&] {
         ObjectSpec o = good;
         o.mass = -1.0;
         HandScene<models::schunk_sdh> s(hand, q, o);
       },
       "object.mass");
-  throws_with(
+  test::check_throws_naming(
       [&] {
         ObjectSpec o = good;
         o.mass = 0.0;
         HandScene<models::schunk_sdh> s(hand, q, o);
       },
       "object.density");
-  throws_with(
+  test::check_throws_naming(
       [&] {
         ObjectSpec o = good;
         o.shapes[0].size[0] = 0.0;
         HandScene<models::schunk_sdh> s(hand, q, o);
       },
       "desc.shapes[0].size[0]");
-  throws_with(
+  test::check_throws_naming(
       [&] {
         ObjectSpec o = good;
         o.shapes.clear();
         HandScene<models::schunk_sdh> s(hand, q, o);
       },
       "object.shapes");
-  throws_with(
+  test::check_throws_naming(
       [&] {
         ObjectSpec o = good;
         o.pose.p[1] = std::nan("");
         HandScene<models::schunk_sdh> s(hand, q, o);
       },
       "desc.pose");
-  throws_with(
+  test::check_throws_naming(
       [&] {
         Vec<7> bad = q;
         bad[3] = std::nan("");
         HandScene<models::schunk_sdh> s(hand, bad, good);
       },
       "q");
-  throws_with(
+  test::check_throws_naming(
       [&] {
         Eigen::Isometry3d h = hand;
         h.translation().x() = std::numeric_limits<double>::infinity();
         HandScene<models::schunk_sdh> s(h, q, good);
       },
       "hand_pose");
-  throws_with(
+  test::check_throws_naming(
       [&] {
         HandScene<models::schunk_sdh> s(hand, q, good);
         ShakeOptions o;
@@ -203,7 +195,7 @@ TEST_CASE("bad input to the scene and the tests throws naming the argument", "[p
         (void)shake_test(s, o);
       },
       "options");
-  throws_with(
+  test::check_throws_naming(
       [&] {
         HandSceneOptions so;
         so.stepper.time_step = 0.0;

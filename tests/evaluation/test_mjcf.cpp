@@ -17,7 +17,8 @@
 
 using namespace topograsp;
 
-TEST_CASE("a hand scene exports as MJCF with a mocap hand and a free object", "[physics][mjcf]") {
+TEST_CASE("a hand scene exports as MJCF with a mocap hand and a free object",
+          "[evaluation][mjcf]") {
   auto scene = test::sdh_bottle_scene(0.9);
   REQUIRE(close_hand(scene).status == Status::success);
   const std::string xml = to_mjcf(scene);

@@ -44,7 +44,7 @@ using namespace topograsp;
 // instantiations are in tests/physics/test_instantiation.cpp).
 template class topograsp::HandScene<models::schunk_sdh, float>;
 
-TEST_CASE("stepping a built scene and shaking it allocate nothing", "[physics][alloc]") {
+TEST_CASE("stepping a built scene and shaking it allocate nothing", "[evaluation][alloc]") {
   auto scene = test::sdh_bottle_scene(1.0);
   REQUIRE(close_hand(scene).status == Status::success);
   const long before = allocations.load();
@@ -66,7 +66,7 @@ TEST_CASE("stepping a built scene and shaking it allocate nothing", "[physics][a
   CHECK(allocations.load() == after + 1);
 }
 
-TEST_CASE("the float stepper holds a box and a grasp", "[physics][float]") {
+TEST_CASE("the float stepper holds a box and a grasp", "[evaluation][float]") {
   World<float> w;
   static const std::array<ShapeSpec, 1> ground{box("", at(0, 0, -0.5), {20.0, 20.0, 0.5})};
   static const std::array<ShapeSpec, 1> cube{box("", Pose{}, {0.1, 0.1, 0.1})};

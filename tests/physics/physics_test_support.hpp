@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Included first by every physics test file: it turns on Eigen's run-time allocation check in the
-// whole executable (so a no-allocation test can use it without breaking the one-definition rule).
-// The hand scenes shared by the tests of closing a hand and the shake test are in
-// tests/evaluation/evaluation_test_support.hpp.
+// Included first by every physics test file. It defines EIGEN_RUNTIME_NO_MALLOC for the whole
+// executable, as tests/evaluation does, so that every test of the stepper compiles the same Eigen
+// (the one-definition rule) whether or not a test turns the allocation check on. The hand scenes
+// shared by the tests of closing a hand and the shake test, and the no-allocation test, are in
+// tests/evaluation/.
 #pragma once
 
 #ifndef EIGEN_RUNTIME_NO_MALLOC

@@ -8,46 +8,37 @@
 #include <string>
 
 #include <catch2/catch.hpp>
+#include "support/throws.hpp"
 
 using namespace topograsp;
 
 TEST_CASE("bad input to the world throws naming the argument", "[physics][input]") {
-  const auto throws_with = [](auto&& f, const std::string& name) {
-    try {
-      f();
-    } catch (const topograsp::invalid_argument& e) {
-      INFO(e.what());
-      CHECK(std::string(e.what()).rfind(name, 0) == 0);
-      return;
-    }
-    FAIL("no topograsp::invalid_argument for " << name);
-  };
   static const std::array<ShapeSpec, 1> cube{box("", Pose{}, {0.1, 0.1, 0.1})};
   BodyDesc good;
   good.shapes = cube;
   good.mass = 1.0;
-  throws_with(
+  test::check_throws_naming(
       [] {
         StepperOptions o;
         o.time_step = 0.0;
         World<> w(o);
       },
       "options.time_step");
-  throws_with(
+  test::check_throws_naming(
       [] {
         StepperOptions o;
         o.substeps = 0;
         World<> w(o);
       },
       "options.substeps");
-  throws_with(
+  test::check_throws_naming(
       [] {
         StepperOptions o;
         o.gravity[2] = std::nan("");
         World<> w(o);
       },
       "options.gravity");
-  throws_with(
+  test::check_throws_naming(
       [&] {
         World<> w;
         BodyDesc d = good;
@@ -55,7 +46,7 @@ TEST_CASE("bad input to the world throws naming the argument", "[physics][input]
         w.add_body(d);
       },
       "desc.shapes");
-  throws_with(
+  test::check_throws_naming(
       [&] {
         World<> w;
         std::array<ShapeSpec, 1> flat = cube;
@@ -65,7 +56,7 @@ TEST_CASE("bad input to the world throws naming the argument", "[physics][input]
         w.add_body(d);
       },
       "desc.shapes[0].size[2]");
-  throws_with(
+  test::check_throws_naming(
       [&] {
         World<> w;
         BodyDesc d = good;
@@ -73,7 +64,7 @@ TEST_CASE("bad input to the world throws naming the argument", "[physics][input]
         w.add_body(d);
       },
       "desc.pose");
-  throws_with(
+  test::check_throws_naming(
       [&] {
         World<> w;
         BodyDesc d = good;
@@ -81,7 +72,7 @@ TEST_CASE("bad input to the world throws naming the argument", "[physics][input]
         w.add_body(d);
       },
       "desc.friction");
-  throws_with(
+  test::check_throws_naming(
       [&] {
         World<> w;
         BodyDesc d = good;
@@ -89,7 +80,7 @@ TEST_CASE("bad input to the world throws naming the argument", "[physics][input]
         w.add_body(d);
       },
       "mass");
-  throws_with(
+  test::check_throws_naming(
       [&] {
         World<> w;
         BodyDesc d = good;
@@ -98,14 +89,14 @@ TEST_CASE("bad input to the world throws naming the argument", "[physics][input]
         w.add_body(d);
       },
       "density");
-  throws_with(
+  test::check_throws_naming(
       [&] {
         World<> w;
         const int b = w.add_body(good);  // dynamic
         w.set_target(b, Eigen::Isometry3d::Identity());
       },
       "body");
-  throws_with(
+  test::check_throws_naming(
       [&] {
         World<> w;
         BodyDesc d = good;

@@ -24,7 +24,8 @@ namespace topograsp {
 
 namespace detail {
 
-/// Precision of the backward messages before the first sweep ("small I" in the design notes).
+/// Precision of the backward messages before the first sweep: a small multiple of the identity,
+/// so that the first beliefs exist before any backward pass has run.
 inline constexpr double k_initial_message_precision = 1e-6;
 
 /// The stages of an AICO sweep (docs/aico.md, "The messages" and "Sweeps"), as Crocoddyl splits

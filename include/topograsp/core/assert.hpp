@@ -7,7 +7,8 @@
 /// TOPOGRASP_ENABLE_ASSERTS to 1 or 0 before the first include (or with -D) to force it on or off
 /// in every build type; use the same setting in every translation unit of a program. When off,
 /// the condition is not evaluated (it is still compiled, so it cannot rot). A failure calls
-/// TOPOGRASP_ASSERT_HANDLER(file, line, condition, message), by default
+/// TOPOGRASP_ASSERT_HANDLER(file, line, condition, message) (like the switch, define it the same
+/// way in every translation unit: inline functions that assert must not differ), by default
 /// topograsp::detail::assertion_failed(), which prints "file:line: TOPOGRASP_ASSERT(condition)
 /// failed: message" to stderr and aborts.
 #pragma once
