@@ -47,31 +47,28 @@ void collide_polytopes(const ShapeView<S>& A, const ShapeView<S>& B, S margin,
     for (int i = 0; i < n; ++i) m = std::max(m, axis.dot(v[static_cast<std::size_t>(i)]));
     return m;
   };
-  // Faces of A.
-  S sep_a = std::numeric_limits<S>::lowest();
-  int face_a = 0;
-  for (int f = 0; f < PA.n_faces; ++f) {
-    const auto u = static_cast<std::size_t>(f);
-    const V3<S> n = A.R * PA.normals[u];
-    const S s = min_dot(vb, PB.n_vertices, n) - (PA.offsets[u] + n.dot(A.p));
-    if (s > margin) return;
-    if (s > sep_a) {
-      sep_a = s;
-      face_a = f;
+  // The face of X (polytope PX) that separates it most from the vertices vy of the other shape:
+  // its separation and index; false as soon as a face separates them by more than the margin.
+  const auto deepest_face = [&](const ShapeView<S>& X, const Polytope<S>& PX, const auto& vy,
+                                int ny, S& sep, int& face) {
+    sep = std::numeric_limits<S>::lowest();
+    face = 0;
+    for (int f = 0; f < PX.n_faces; ++f) {
+      const auto u = static_cast<std::size_t>(f);
+      const V3<S> n = X.R * PX.normals[u];
+      const S s = min_dot(vy, ny, n) - (PX.offsets[u] + n.dot(X.p));
+      if (s > margin) return false;
+      if (s > sep) {
+        sep = s;
+        face = f;
+      }
     }
-  }
-  S sep_b = std::numeric_limits<S>::lowest();
-  int face_b = 0;
-  for (int f = 0; f < PB.n_faces; ++f) {
-    const auto u = static_cast<std::size_t>(f);
-    const V3<S> n = B.R * PB.normals[u];
-    const S s = min_dot(va, PA.n_vertices, n) - (PB.offsets[u] + n.dot(B.p));
-    if (s > margin) return;
-    if (s > sep_b) {
-      sep_b = s;
-      face_b = f;
-    }
-  }
+    return true;
+  };
+  S sep_a, sep_b;
+  int face_a, face_b;
+  if (!deepest_face(A, PA, vb, PB.n_vertices, sep_a, face_a)) return;
+  if (!deepest_face(B, PB, va, PA.n_vertices, sep_b, face_b)) return;
   // Edge pairs.
   S sep_e = std::numeric_limits<S>::lowest();
   int dir_a = -1, dir_b = -1;
