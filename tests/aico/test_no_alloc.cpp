@@ -1,47 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// A sweep allocates nothing: Eigen's run-time malloc guard plus a global operator new counter.
-#define EIGEN_RUNTIME_NO_MALLOC
+// A sweep allocates nothing: Eigen's run-time malloc guard plus a global operator new counter
+// (tests/support/allocation_counter.hpp).
 #include <catch2/catch.hpp>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
 #include <topograsp/aico.hpp>
 #include <topograsp/model/models.hpp>
 
 #include "stacks.hpp"
+#include "support/allocation_counter.hpp"
 #include "wrap_scene.hpp"
-
-namespace {
-std::atomic<long> g_news{0};
-}  // namespace
-
-// AddressSanitizer replaces operator new itself; under it only Eigen's guard counts.
-#if defined(__SANITIZE_ADDRESS__)
-#define TOPOGRASP_TEST_COUNT_NEW 0
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define TOPOGRASP_TEST_COUNT_NEW 0
-#endif
-#endif
-#ifndef TOPOGRASP_TEST_COUNT_NEW
-#define TOPOGRASP_TEST_COUNT_NEW 1
-#endif
-
-#if TOPOGRASP_TEST_COUNT_NEW
-// The replacements pair malloc with free; GCC cannot see that through the replaced operators.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-#endif
-
-void* operator new(std::size_t n) {
-  ++g_news;
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-#endif
 
 namespace {
 
@@ -50,14 +17,15 @@ using namespace topograsp;
 template <class Problem, class Workspace>
 void check_sweeps_do_not_allocate(const Problem& problem, Workspace& ws) {
   (void)initialise(problem, ws);
-  const long before = g_news.load();
+  const long before = test::allocations();
   Eigen::internal::set_is_malloc_allowed(false);
   int relocations = 0;
   for (int k = 0; k < 3; ++k) relocations += sweep(problem, ws).relocations;
   const bool passes_ok = message_passes(problem, ws);
   Eigen::internal::set_is_malloc_allowed(true);
-  CHECK(g_news.load() == before);
-  CHECK(relocations > 0);  // the sweeps re-evaluated the tasks
+  CHECK(test::allocations() == before);
+  CHECK(test::allocation_counter_counts());  // so the check above can fail
+  CHECK(relocations > 0);                    // the sweeps re-evaluated the tasks
   CHECK(passes_ok);
 }
 

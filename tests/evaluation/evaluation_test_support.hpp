@@ -1,12 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Scenes shared by the evaluation tests. Every evaluation test file includes this header first: it
-// turns on Eigen's run-time allocation check in the whole executable (so the no-allocation test can
-// use it without breaking the one-definition rule).
+// Scenes shared by the evaluation tests. (EIGEN_RUNTIME_NO_MALLOC, for the no-allocation test, is
+// defined for every test executable by tests/CMakeLists.txt.)
 #pragma once
-
-#ifndef EIGEN_RUNTIME_NO_MALLOC
-#define EIGEN_RUNTIME_NO_MALLOC
-#endif
 
 #include <topograsp/evaluation.hpp>
 #include <topograsp/model/models.hpp>
