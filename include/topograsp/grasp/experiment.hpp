@@ -14,6 +14,7 @@
 #include <string>
 #include <string_view>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <topograsp/core/random.hpp>
@@ -26,7 +27,7 @@ struct ExperimentOptions {
   std::vector<GraspObject> objects;     ///< default: the paper's hammer and bottle
   std::vector<TransferMethod> methods;  ///< default: all three
   int jobs = 1;                         ///< worker threads (>= 1)
-  std::uint64_t seed = 1;               ///< seeds every shake test (mixed with the grasp's id)
+  std::uint64_t seed = 1;               ///< seeds every shake test (see grasp_seed)
   int shard_index = 0;                  ///< run hypotheses with id % shard_count == shard_index
   int shard_count = 1;
   int max_hypotheses = 0;  ///< if > 0, only the first this many hypotheses of each object
@@ -56,18 +57,46 @@ struct ObjectResult {
   }
 };
 
-/// The seed of the shake test of grasp \p id of object \p object by method \p method (-1 for the
-/// demonstration): a SplitMix64 mix, so results do not depend on the order or the threads.
-[[nodiscard]] inline std::uint64_t grasp_seed(std::uint64_t seed, std::size_t object, int id,
-                                              int method) noexcept {
-  return detail::splitmix64_mix(seed ^ (0x9e3779b97f4a7c15ull * (object + 1)) ^
+/// The 64-bit FNV-1a hash of \p text.
+[[nodiscard]] constexpr std::uint64_t fnv1a_64(std::string_view text) noexcept {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (const char c : text) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 0x100000001b3ull;
+  }
+  return h;
+}
+
+/// The seed of the shake test of grasp \p id of the object called \p object by method \p method
+/// (-1 for the demonstration): the object's name hashed (FNV-1a), then a SplitMix64 mix. A grasp's
+/// random stream depends only on what it is, never on the order, the threads, the other objects
+/// of the run or the shard, so any split of a run reproduces the whole.
+[[nodiscard]] constexpr std::uint64_t grasp_seed(std::uint64_t seed, std::string_view object,
+                                                 int id, int method) noexcept {
+  return detail::splitmix64_mix(seed ^ detail::splitmix64_mix(fnv1a_64(object)) ^
                                 (0xbf58476d1ce4e5b9ull * static_cast<std::uint64_t>(id + 1)) ^
                                 (0x94d049bb133111ebull * static_cast<std::uint64_t>(method + 2)));
 }
 
 namespace detail {
-// Runs body(i) for i in [0, n) on `jobs` threads; each index once; exceptions are rethrown.
-inline void parallel_for(int n, int jobs, const std::function<void(int)>& body) {
+
+// Starts a std::thread running f: the default thread factory of parallel_for.
+struct StartStdThread {
+  template <class F>
+  std::thread operator()(F&& f) const {
+    return std::thread(std::forward<F>(f));
+  }
+};
+
+// Runs body(i) for i in [0, n) on up to `jobs` threads, the calling thread one of them; each index
+// once; the first exception of body is rethrown after every thread has been joined. Threads come
+// from start_thread(worker) (a std::thread); if starting one throws (std::system_error when the
+// system has no more threads, std::bad_alloc), no more are started and the work goes on with the
+// threads that did start (the calling thread always works), so a failed start never ends in
+// std::terminate. Returns the number of threads that ran, and the start's error in *start_error.
+template <class StartThread = StartStdThread>
+int parallel_for(int n, int jobs, const std::function<void(int)>& body,
+                 StartThread&& start_thread = {}, std::string* start_error = nullptr) {
   std::atomic<int> next{0};
   std::exception_ptr error;
   std::mutex error_mutex;
@@ -82,34 +111,96 @@ inline void parallel_for(int n, int jobs, const std::function<void(int)>& body) 
     }
   };
   std::vector<std::thread> threads;
-  for (int t = 1; t < std::min(jobs, n); ++t) threads.emplace_back(worker);
+  const int wanted = std::min(jobs, n);
+  try {
+    threads.reserve(static_cast<std::size_t>(std::max(wanted - 1, 0)));
+    for (int t = 1; t < wanted; ++t) threads.push_back(start_thread(worker));
+  } catch (const std::exception& e) {
+    if (start_error != nullptr) *start_error = e.what();
+  } catch (...) {
+    if (start_error != nullptr) *start_error = "unknown error";
+  }
   worker();
   for (std::thread& t : threads) t.join();
   if (error) std::rethrow_exception(error);
+  return static_cast<int>(threads.size()) + 1;
 }
+
 }  // namespace detail
 
 /// Called with a line of progress (no newline) as the experiment runs; may be called from
 /// worker threads, one call at a time.
 using ProgressFn = std::function<void(std::string_view)>;
 
-/// Runs the experiment described by \p options. Throws topograsp::invalid_argument naming the field
-/// for jobs < 1, a bad shard, an empty object or method list, or an invalid object. Results are
-/// identical for equal options whatever the number of jobs.
-[[nodiscard]] inline std::vector<ObjectResult> run_experiment(const ExperimentOptions& options,
-                                                              const ProgressFn& progress = {}) {
+namespace detail {
+// run_experiment with the threads started by start_thread (a test seam, see parallel_for).
+template <class StartThread>
+std::vector<ObjectResult> run_experiment_with(const ExperimentOptions& options,
+                                              const ProgressFn& progress,
+                                              StartThread&& start_thread);
+}  // namespace detail
+
+/// Checks \p options as run_experiment does before any work.
+/// \throws topograsp::invalid_argument naming the field for jobs < 1, a bad shard,
+/// max_hypotheses < 0, an empty object or method list, an object (by name) or a method given twice
+/// (their scenes would overwrite each other), an invalid object, or a transfer parameter outside
+/// its range (validate_transfer_parameters).
+inline void validate_experiment_options(const ExperimentOptions& options) {
   if (options.jobs < 1) detail::throw_invalid_argument("jobs", "expected at least 1");
   if (options.shard_count < 1 || options.shard_index < 0 ||
       options.shard_index >= options.shard_count)
     detail::throw_invalid_argument("shard", "expected 0 <= index < count");
+  if (options.max_hypotheses < 0)
+    detail::throw_invalid_argument("max_hypotheses", "expected >= 0 (0: all)");
   if (options.objects.empty()) detail::throw_invalid_argument("objects", "expected at least one");
   if (options.methods.empty()) detail::throw_invalid_argument("methods", "expected at least one");
+  for (std::size_t i = 0; i < options.objects.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (options.objects[i].name == options.objects[j].name)
+        detail::throw_invalid_argument(
+            "objects", "\"" + options.objects[i].name + "\" is given twice (each object once)");
+  for (std::size_t i = 0; i < options.methods.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (options.methods[i] == options.methods[j])
+        detail::throw_invalid_argument("methods", "\"" +
+                                                      std::string(to_string(options.methods[i])) +
+                                                      "\" is given twice (each method once)");
   for (const GraspObject& o : options.objects) o.validate();
+  validate_transfer_parameters(options.transfer);
+}
+
+/// Runs the experiment described by \p options. Throws topograsp::invalid_argument naming the
+/// field, before any work, for the options validate_experiment_options refuses. Results are
+/// identical for equal options whatever the number of jobs, and a grasp's result does not depend on
+/// the other objects or the shard (grasp_seed). If fewer than \p options.jobs threads can be
+/// started, the run goes on with those that did (at least the calling thread) and says so once
+/// through \p progress, in a line that starts with "warning: ".
+[[nodiscard]] inline std::vector<ObjectResult> run_experiment(const ExperimentOptions& options,
+                                                              const ProgressFn& progress = {}) {
+  return detail::run_experiment_with(options, progress, detail::StartStdThread{});
+}
+
+template <class StartThread>
+std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& options,
+                                                      const ProgressFn& progress,
+                                                      StartThread&& start_thread) {
+  validate_experiment_options(options);
   std::mutex progress_mutex;
   const auto say = [&](const std::string& line) {
     if (!progress) return;
     const std::lock_guard lock(progress_mutex);
     progress(line);
+  };
+  bool warned = false;
+  const auto run_parallel = [&](int n, const std::function<void(int)>& body) {
+    std::string start_error;
+    const int ran = detail::parallel_for(n, options.jobs, body, start_thread, &start_error);
+    if (!start_error.empty() && !warned) {
+      warned = true;
+      say("warning: could start only " + std::to_string(ran) + " of " +
+          std::to_string(std::min(options.jobs, n)) + " threads (" + start_error +
+          "); the run goes on with " + std::to_string(ran));
+    }
   };
   std::vector<ObjectResult> results;
   for (std::size_t oi = 0; oi < options.objects.size(); ++oi) {
@@ -124,10 +215,10 @@ using ProgressFn = std::function<void(std::string_view)>;
     res.hypotheses = static_cast<int>(ids.size());
     res.human.resize(ids.size());
     std::atomic<int> done{0};
-    detail::parallel_for(static_cast<int>(ids.size()), options.jobs, [&](int k) {
+    run_parallel(static_cast<int>(ids.size()), [&](int k) {
       GraspSimOptions sim = options.transfer.sim;
       const int id = ids[static_cast<std::size_t>(k)];
-      sim.shake.seed = grasp_seed(options.seed, oi, id, -1);
+      sim.shake.seed = grasp_seed(options.seed, res.object.name, id, -1);
       res.human[static_cast<std::size_t>(k)] =
           demonstrate(res.object, hyps[static_cast<std::size_t>(id)], id, sim);
       say("[" + res.object.name + "] human demonstrations " + std::to_string(++done) + "/" +
@@ -142,13 +233,13 @@ using ProgressFn = std::function<void(std::string_view)>;
     res.transfers.assign(nm, std::vector<RobotGrasp>(stable.size()));
     done = 0;
     const int total = static_cast<int>(nm * stable.size());
-    detail::parallel_for(total, options.jobs, [&](int k) {
+    run_parallel(total, [&](int k) {
       const std::size_t m = static_cast<std::size_t>(k) / std::max<std::size_t>(stable.size(), 1);
       const std::size_t s = static_cast<std::size_t>(k) % std::max<std::size_t>(stable.size(), 1);
       TransferOptions transfer_options = options.transfer;
       const HumanGrasp& g = *stable[s];
       transfer_options.sim.shake.seed =
-          grasp_seed(options.seed, oi, g.id, static_cast<int>(options.methods[m]));
+          grasp_seed(options.seed, res.object.name, g.id, static_cast<int>(options.methods[m]));
       res.transfers[m][s] = transfer(options.methods[m], res.object, g, transfer_options);
       say("[" + res.object.name + "] transfers " + std::to_string(++done) + "/" +
           std::to_string(total));
