@@ -1,41 +1,28 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // grasp_transfer: the paper's experiment. Generates the human grasps on the objects, keeps the
 // stable ones, transfers them to the Schunk SDH with each method, tests every result, and prints
-// the paper's Table I beside its own; writes DIR/results.json and DIR/scenes/*.xml (MJCF).
+// the paper's Table I beside its own; writes DIR/results.json and DIR/scenes/*.xml (MJCF), and
+// with --figures DIR/figures/*.svg and DIR/index.html, through a staging folder committed at the
+// end (io/output_folder.hpp). The command line is parse_command_line (io/command_line.hpp).
+#include <array>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <topograsp/grasp/experiment.hpp>
 #include <topograsp/io/command_line.hpp>
+#include <topograsp/io/output_folder.hpp>
 #include <topograsp/io/report.hpp>
 #include <topograsp/io/results.hpp>
 
 namespace {
 
 using namespace topograsp;
-
-// Creates DIR/scenes and checks that DIR is writable, before any work is done.
-void prepare_output(const std::filesystem::path& out) {
-  std::error_code ec;
-  std::filesystem::create_directories(out / "scenes", ec);
-  const std::filesystem::path probe = out / ".write_test";
-  std::ofstream f(probe);
-  if (ec || !f) throw std::runtime_error("--out: cannot write to \"" + out.string() + "\"");
-  f.close();
-  std::filesystem::remove(probe, ec);
-}
-
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream f(path);
-  f << text;
-  if (!f) throw std::runtime_error("cannot write \"" + path.string() + "\"");
-}
 
 std::string percent(const MethodSummary* m) {
   if (m == nullptr || m->tested == 0) return "-";
@@ -88,6 +75,12 @@ void print_table(const ExperimentOptions& experiment, const std::vector<ObjectRe
 }  // namespace
 
 int main(int argc, char** argv) {
+#ifdef SIGXFSZ
+  // Past a file-size limit a write fails with EFBIG (a readable error, the previous run in DIR
+  // untouched) instead of the signal ending the process.
+  (void)std::signal(SIGXFSZ, SIG_IGN);
+#endif
+  bool started = false;  // exit status 2 before the computation starts, 1 after
   try {
     const std::vector<std::string_view> args(argv + 1, argv + argc);
     const CommandLine cli = parse_command_line(args);
@@ -95,31 +88,42 @@ int main(int argc, char** argv) {
       std::fputs(command_line_usage().c_str(), stdout);
       return 0;
     }
-    prepare_output(cli.out);
+    validate_experiment_options(cli.experiment);
+    check_scene_names(cli.experiment);
+    OutputFolder folder(cli.out, cli.force, "--out");  // checked before any work
+    started = true;
     const auto t0 = std::chrono::steady_clock::now();
-    ProgressFn progress;
-    if (!cli.quiet) progress = [](std::string_view line) { std::cerr << line << '\n'; };
+    const ProgressFn progress = [quiet = cli.quiet](std::string_view line) {
+      if (!quiet || line.starts_with("warning:")) std::cerr << line << '\n';
+    };
     const std::vector<ObjectResult> results = run_experiment(cli.experiment, progress);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    // Scenes of every tested grasp, then results.json.
+    // Everything into the staging folder: the scenes of every tested grasp, results.json, the
+    // figures; then the commit puts them in place, results.json last.
+    const std::filesystem::path& stage = folder.staging();
+    std::filesystem::create_directories(stage / "scenes");
     for (const ObjectResult& r : results) {
       for (const HumanGrasp& g : r.human)
         if (g.reached)
-          write_text(cli.out / scene_path(r.object.name, g.id, "human"),
-                     grasp_mjcf<models::human_hand>(r.object, g.hand_pose, g.q, g.object_pose,
-                                                    cli.experiment.transfer));
+          detail::write_text_file(
+              stage / scene_path(r.object.name, g.id, "human"),
+              grasp_mjcf<models::human_hand>(r.object, g.hand_pose, g.q, g.object_pose,
+                                             cli.experiment.transfer));
       for (std::size_t m = 0; m < r.transfers.size(); ++m)
         for (std::size_t k = 0; k < r.transfers[m].size(); ++k) {
           const RobotGrasp& t = r.transfers[m][k];
           if (!t.planned) continue;
-          write_text(cli.out / scene_path(r.object.name, r.transferred_ids[k], to_string(t.method)),
-                     grasp_mjcf<models::schunk_sdh>(r.object, t.hand_pose, t.q_closed,
-                                                    t.object_pose, cli.experiment.transfer));
+          detail::write_text_file(
+              stage / scene_path(r.object.name, r.transferred_ids[k], to_string(t.method)),
+              grasp_mjcf<models::schunk_sdh>(r.object, t.hand_pose, t.q_closed, t.object_pose,
+                                             cli.experiment.transfer));
         }
     }
-    write_text(cli.out / "results.json", results_json(cli.experiment, results).dump(2) + "\n");
-    if (cli.figures) (void)write_report(cli.out, results);
+    detail::write_text_file(stage / "results.json",
+                            results_json(cli.experiment, results).dump(2) + "\n");
+    if (cli.figures) (void)write_report(stage, results);
+    folder.commit();
     print_table(cli.experiment, results);
     std::printf("\n%.1f s with %d job(s); results in %s%s\n", seconds, cli.experiment.jobs,
                 (cli.out / "results.json").string().c_str(),
@@ -127,6 +131,8 @@ int main(int argc, char** argv) {
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "grasp_transfer: " << e.what() << '\n';
-    return 2;
+    if (started)
+      std::cerr << "grasp_transfer: the previous run in the output folder is untouched\n";
+    return started ? 1 : 2;
   }
 }

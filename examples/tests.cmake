@@ -7,22 +7,53 @@ add_test(NAME "example: grasp_transfer (small run)"
          COMMAND grasp_transfer --max-hypotheses 4 --jobs 2 --quiet --figures
                  --out ${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_small)
 add_test(NAME "example: render_grasp" COMMAND render_grasp --out ${CMAKE_CURRENT_BINARY_DIR}/render-out)
-# Bad input: a clear message on stderr and a non-zero exit status.
-foreach(case IN ITEMS "unknown object|--objects,anvil|unknown object \"anvil\""
-                      "unknown method|--methods,teleport|unknown method \"teleport\""
-                      "bad shard|--shard,4/3|--shard: expected 1 <= K <= N"
-                      "bad jobs|--jobs,zero|--jobs: expected a number"
-                      "unwritable out|--out,/proc/grasp_transfer|--out: cannot write"
-                      "unknown parameter|--set,reach=1|unknown transfer parameter \"reach\""
-                      "negative parameter|--set,final_approach=-1|value: final_approach must be"
-                      "parameter without value|--set,final_approach|--set: expected NAME=VALUE"
-                      "unknown winding reference|--winding-reference,palm|winding_reference: unknown reference")
+# Bad input: a clear message on stderr naming the option, and exit status 2 (nothing computed).
+# Each case is "name|arguments separated by spaces|regex that stderr must match".
+set(bad ${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_bad)
+foreach(case IN ITEMS "unknown object|--objects anvil|--objects: unknown object \"anvil\""
+                      "unknown method|--methods teleport|--methods: unknown method \"teleport\""
+                      "duplicate object|--objects hammer,hammer|--objects: \"hammer\" is given twice"
+                      "duplicate method|--methods topological,topological|--methods: \"topological\" is given twice"
+                      "empty name|--objects hammer,,bottle|--objects: empty name"
+                      "an option as a value|--out --jobs 2|--out: expected a value, got the option \"--jobs\""
+                      "a missing value|--jobs|--jobs: expected a value"
+                      "a repeated option|--out a --out b|--out: given twice"
+                      "unknown option|--outt x|unknown option \"--outt\""
+                      "bad shard|--shard 4/3|--shard: expected 1 <= K <= N"
+                      "bad jobs|--jobs zero|--jobs: expected a number"
+                      "too many jobs|--jobs 100000|--jobs: expected 1 to 1024"
+                      "unwritable out|--out /proc/grasp_transfer|--out: cannot"
+                      "unknown parameter|--set reach=1|unknown transfer parameter \"reach\""
+                      "negative parameter|--set final_approach=-1|value: final_approach must be in"
+                      "parameter out of range|--set backoff=1e300|--set: value: backoff must be in \\[0, 0.3\\]"
+                      "parameter set twice|--set backoff=0.1 --set backoff=0.2|--set: backoff is set twice"
+                      "parameter without value|--set final_approach|--set: expected NAME=VALUE"
+                      "unknown winding reference|--winding-reference palm|--winding-reference: unknown reference")
   string(REPLACE "|" ";" parts "${case}")
   list(GET parts 0 name)
   list(GET parts 1 args)
   list(GET parts 2 expect)
-  string(REPLACE "," ";" args "${args}")
+  string(REPLACE " " ";" args "${args}")
   add_test(NAME "example: grasp_transfer rejects ${name}"
            COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:grasp_transfer>;${args}"
-                   "-DEXPECT=${expect}" -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
+                   "-DEXPECT=${expect}" -DSTATUS=2 -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
 endforeach()
+# Output folders that are refused before any work (exit 2), each prepared by the test.
+add_test(NAME "example: grasp_transfer rejects results.json that is a folder"
+         COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:grasp_transfer>;--quiet;--out;${bad}-a"
+                 "-DEXPECT=--out: \"[^\"]*results.json\" exists and is not a regular file"
+                 -DSTATUS=2 -DMKDIR=${bad}-a/results.json
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
+add_test(NAME "example: grasp_transfer rejects a folder of other files without --force"
+         COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:grasp_transfer>;--quiet;--out;${bad}-b"
+                 "-DEXPECT=--out: .* holds no results.json of grasp_transfer; use --force"
+                 -DSTATUS=2 -DMKFILE=${bad}-b/notes.txt
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
+add_test(NAME "example: grasp_transfer rejects an output folder inside a file"
+         COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:grasp_transfer>;--quiet;--out;${bad}-c/file/out"
+                 "-DEXPECT=--out: cannot create the folder" -DSTATUS=2 -DMKFILE=${bad}-c/file
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
+# --help prints the usage with every parameter's range, and exits 0.
+add_test(NAME "example: grasp_transfer --help" COMMAND grasp_transfer --help)
+set_tests_properties("example: grasp_transfer --help" PROPERTIES
+                     PASS_REGULAR_EXPRESSION "backoff +0.03 +\\[0, 0.3\\]")

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <topograsp/grasp/experiment.hpp>
+#include <topograsp/io/file_name.hpp>
 #include <topograsp/io/html_page.hpp>
 #include <topograsp/io/svg_plot.hpp>
 #include <topograsp/io/svg_scene.hpp>
@@ -106,7 +107,8 @@ inline std::vector<std::string> write_report(const std::filesystem::path& dir,
         }
         panels.push_back(std::move(p));
       }
-      const std::string name = "figures/" + r.object.name + "_" + std::to_string(id) + ".svg";
+      const std::string name =
+          "figures/" + file_name_part(r.object.name) + "_" + std::to_string(id) + ".svg";
       write_svg((dir / name).string(),
                 svg_panels(panels, r.object.name + ", grasp " + std::to_string(id)));
       written.push_back(name);
@@ -116,13 +118,13 @@ inline std::vector<std::string> write_report(const std::filesystem::path& dir,
         const RobotGrasp& t = r.transfers[m][k];
         if (t.winding_plan.empty()) continue;
         const std::string fig7 =
-            "figures/windings_" + r.object.name + "_" + std::to_string(id) + ".svg";
+            "figures/windings_" + file_name_part(r.object.name) + "_" + std::to_string(id) + ".svg";
         winding_plot<2>(t.winding_plan, t.winding_targets,
                         "Windings of the SDH's curves over the plan (" + r.object.name + ")",
                         "time step t", {"gamma_1 (finger 1)", "gamma_2 (finger 2)"})
             .write((dir / fig7).string());
         const std::string cost =
-            "figures/cost_" + r.object.name + "_" + std::to_string(id) + ".svg";
+            "figures/cost_" + file_name_part(r.object.name) + "_" + std::to_string(id) + ".svg";
         cost_plot(t.sweep_log).write((dir / cost).string());
         written.push_back(fig7);
         written.push_back(cost);

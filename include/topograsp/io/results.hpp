@@ -9,17 +9,22 @@
 #include <vector>
 
 #include <topograsp/grasp/experiment.hpp>
+#include <topograsp/io/file_name.hpp>
 #include <topograsp/io/json.hpp>
 #include <topograsp/io/mjcf.hpp>
+#include <topograsp/io/output_folder.hpp>
 
 namespace topograsp {
 
 /// The file name (relative to the output folder) of the MJCF scene of a grasp:
-/// "scenes/<object>_<id>_<method>.xml", method "human" for the demonstration.
+/// "scenes/<object>_<id>_<method>.xml", method "human" for the demonstration. The object and
+/// method names are cleaned by file_name_part (any byte but letters, digits, '-', '_' and a
+/// non-leading '.' becomes '_', an empty name "_"), so no name ("../../x", "a/b", "", control
+/// characters) can put the scene outside DIR/scenes.
 [[nodiscard]] inline std::string scene_path(std::string_view object, int id,
                                             std::string_view method) {
-  return "scenes/" + std::string(object) + "_" + std::to_string(id) + "_" + std::string(method) +
-         ".xml";
+  return "scenes/" + file_name_part(object) + "_" + std::to_string(id) + "_" +
+         file_name_part(method) + ".xml";
 }
 
 /// The MJCF text of a closed grasp: hand model \p M at \p hand_pose with joints \p q, the object
@@ -47,7 +52,21 @@ inline Json json_vector(const auto& v) {
 }
 }  // namespace detail
 
-/// results.json: {"config": {...}, "objects": [...], "grasps": [...]}; see docs/transfer.md.
+/// Checks that the objects of \p options have scene files of their own: distinct names can clean
+/// to the same file name part ("a/b" and "a_b", file_name_part).
+/// \throws topograsp::invalid_argument naming "objects" and both names if two would share files.
+inline void check_scene_names(const ExperimentOptions& options) {
+  for (std::size_t i = 0; i < options.objects.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (file_name_part(options.objects[i].name) == file_name_part(options.objects[j].name))
+        detail::throw_invalid_argument(
+            "objects", "\"" + options.objects[j].name + "\" and \"" + options.objects[i].name +
+                           "\" would share the scene files \"" +
+                           scene_path(options.objects[i].name, 0, "human") + "\", ...");
+}
+
+/// results.json: {"generator": "topograsp grasp_transfer", "config": {...}, "objects": [...],
+/// "grasps": [...]}; see docs/transfer.md.
 [[nodiscard]] inline Json results_json(const ExperimentOptions& options,
                                        const std::vector<ObjectResult>& results) {
   Json cfg = Json::object();
@@ -129,6 +148,7 @@ inline Json json_vector(const auto& v) {
     }
   }
   Json doc = Json::object();
+  doc.set("generator", std::string(results_generator));
   doc.set("config", cfg);
   doc.set("objects", out_objects);
   doc.set("grasps", grasps);

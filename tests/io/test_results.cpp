@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include <filesystem>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include <topograsp/io/results.hpp>
+
+using namespace topograsp;
+
+TEST_CASE("scene paths never leave DIR/scenes", "[io][results][bad-input]") {
+  CHECK(scene_path("hammer", 3, "topological") == "scenes/hammer_3_topological.xml");
+  CHECK(file_name_part("bottle.v2") == "bottle.v2");
+  for (const std::string& name :
+       {std::string("../../x"), std::string("a/b"), std::string(""), std::string(".."),
+        std::string("."), std::string("/etc/passwd"), std::string("a\\b"), std::string("c\nd\x01"),
+        std::string("e\0f", 3), std::string(".hidden"), std::string("\xff\xfe")}) {
+    INFO(name);
+    const std::string part = file_name_part(name);
+    CHECK_FALSE(part.empty());
+    CHECK(part.front() != '.');
+    for (const char c : part) {
+      const bool safe = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                        (c >= '0' && c <= '9') || c == '-' || c == '_' || c == '.';
+      CHECK(safe);
+    }
+    const std::filesystem::path p(scene_path(name, 0, name));
+    // One folder ("scenes") and one plain file name in it.
+    CHECK(p.parent_path() == "scenes");
+    CHECK(p.filename().string().find('/') == std::string::npos);
+    CHECK(p.lexically_normal().string().rfind("scenes/", 0) == 0);
+  }
+  CHECK(file_name_part("../../x") == "_._.._x");
+  CHECK(file_name_part("") == "_");
+}
+
+TEST_CASE("objects whose names clean to the same file name are refused",
+          "[io][results][bad-input]") {
+  ExperimentOptions o;
+  GraspObject a = objects::can(), b = objects::can();
+  a.name = "a/b";
+  b.name = "a_b";
+  o.objects = {a, b};
+  CHECK_THROWS_WITH(check_scene_names(o),
+                    Catch::StartsWith("objects: \"a/b\" and \"a_b\" would share the scene files"));
+  b.name = "a_c";
+  o.objects = {a, b};
+  CHECK_NOTHROW(check_scene_names(o));
+}
