@@ -116,6 +116,15 @@ TEST_CASE("objects and methods are each given once", "[io][command_line][bad-inp
              Catch::StartsWith("--objects: unknown object \"anvil\"") && Catch::Contains("bottle"));
   CHECK_THAT(error_of({"--methods", "teleport"}),
              Catch::StartsWith("--methods: unknown method \"teleport\""));
+  // A long list is refused at its first repeated name, without looking at the rest.
+  std::string many = "hammer,bottle,mug,box,ball,can";
+  while (many.size() < 3'000'000) many += ",x" + std::to_string(many.size());
+  CHECK_THAT(error_of({"--objects", many}), Catch::StartsWith("--objects: unknown object \"x"));
+  many = "topological,transplant,fingertip";
+  while (many.size() < 3'000'000) many += ",fingertip";
+  CHECK_THAT(error_of({"--methods", many}),
+             Catch::StartsWith("--methods: \"fingertip\" is given twice in \"topological,") &&
+                 Catch::EndsWith("...\""));
   CHECK_THAT(error_of({"--winding-reference", "palm"}),
              Catch::StartsWith("--winding-reference: unknown reference \"palm\""));
 }

@@ -67,9 +67,19 @@ T parse_cli_number(std::string_view text, std::string_view option) {
   return value;
 }
 
-// The comma-separated names of list; an empty name or a repeated one is an error naming option.
-inline std::vector<std::string_view> split_cli_list(std::string_view list,
-                                                    std::string_view option) {
+inline std::string expected_names(const std::vector<std::string>& names) {
+  std::string s;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    s += (i == 0 ? "" : (i + 1 == names.size() ? " or " : ", ")) + names[i];
+  return s;
+}
+
+// The comma-separated names of list, each one of known (in the order given). An empty, unknown
+// or repeated name is an error naming option; so at most known.size() + 1 names are looked at,
+// however long the list.
+inline std::vector<std::string_view> split_cli_list(std::string_view list, std::string_view option,
+                                                    const std::vector<std::string>& known,
+                                                    std::string_view noun) {
   std::vector<std::string_view> names;
   std::size_t start = 0;
   while (true) {
@@ -79,6 +89,11 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list,
     if (name.empty())
       throw_invalid_argument(
           option, "empty name in " + quote_argument(list) + " (expected comma-separated names)");
+    bool is_known = false;
+    for (const std::string& k : known) is_known = is_known || k == name;
+    if (!is_known)
+      throw_invalid_argument(option, "unknown " + std::string(noun) + " " + quote_argument(name) +
+                                         " (expected " + expected_names(known) + ")");
     for (const std::string_view seen : names)
       if (seen == name)
         throw_invalid_argument(option,
@@ -88,13 +103,6 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list,
     start = comma + 1;
   }
   return names;
-}
-
-inline std::string expected_names(const std::vector<std::string>& names) {
-  std::string s;
-  for (std::size_t i = 0; i < names.size(); ++i)
-    s += (i == 0 ? "" : (i + 1 == names.size() ? " or " : ", ")) + names[i];
-  return s;
 }
 
 }  // namespace detail
@@ -213,19 +221,20 @@ inline std::string expected_names(const std::vector<std::string>& names) {
       set(detail::parse_cli_number<double>(value.substr(eq + 1), "--set " + std::string(name)));
     }
   }
-  std::vector<std::string> object_names = objects::names();
-  for (const std::string_view name : detail::split_cli_list(objects_list, "--objects")) {
+  for (const std::string_view name :
+       detail::split_cli_list(objects_list, "--objects", objects::names(), "object")) {
     std::optional<GraspObject> o = objects::find(name);
     if (!o)
-      detail::throw_invalid_argument("--objects", "unknown object " + detail::quote_argument(name) +
-                                                      " (expected " +
-                                                      detail::expected_names(object_names) + ")");
+      detail::throw_invalid_argument("--objects", "no object " + detail::quote_argument(name));
     cli.experiment.objects.push_back(std::move(*o));
   }
-  for (const std::string_view name : detail::split_cli_list(methods_list, "--methods"))
-    cli.experiment.methods.push_back(enum_from_name(
-        name, {TransferMethod::topological, TransferMethod::transplant, TransferMethod::fingertip},
-        "--methods", "method"));
+  std::vector<std::string> method_names;
+  for (const TransferMethod m :
+       {TransferMethod::topological, TransferMethod::transplant, TransferMethod::fingertip})
+    method_names.emplace_back(to_string(m));
+  for (const std::string_view name :
+       detail::split_cli_list(methods_list, "--methods", method_names, "method"))
+    cli.experiment.methods.push_back(transfer_method(name));
   return cli;
 }
 
