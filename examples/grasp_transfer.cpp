@@ -2,7 +2,6 @@
 // grasp_transfer: the paper's experiment. Generates the human grasps on the objects, keeps the
 // stable ones, transfers them to the Schunk SDH with each method, tests every result, and prints
 // the paper's Table I beside its own; writes DIR/results.json and DIR/scenes/*.xml (MJCF).
-#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -13,128 +12,13 @@
 #include <vector>
 
 #include <topograsp/grasp/experiment.hpp>
+#include <topograsp/io/command_line.hpp>
 #include <topograsp/io/report.hpp>
 #include <topograsp/io/results.hpp>
 
 namespace {
 
 using namespace topograsp;
-
-constexpr const char* k_usage = R"(usage: grasp_transfer [options]
-
-Transfers stable human grasps to the Schunk SDH (on a 7-DOF arm) and tests every result in
-simulation, as in "Topological Synergies for Grasp Transfer" (Table I).
-
-options:
-  --objects LIST   comma-separated objects (default hammer,bottle; also mug, box, ball, can)
-  --methods LIST   comma-separated methods (default topological,transplant,fingertip)
-  --out DIR        write DIR/results.json and DIR/scenes/*.xml (default grasp_transfer_out)
-  --jobs N         worker threads (default 1)
-  --seed S         seed of the shake tests (default 1); same seed, same results
-  --shard K/N      run only hypotheses with id % N == K - 1 (1 <= K <= N), for job arrays
-  --max-hypotheses M  only the first M hypotheses of each object (default all)
-  --winding-reference R  where the windings are taken: centre_of_mass (default, the paper)
-                   or nearest_point (the object's point nearest the human's grasp centre)
-  --set NAME=VALUE  set a transfer parameter (repeatable; the names and defaults are listed
-                   below, their meaning in docs/transfer.md), e.g. --set final_approach=0.1
-  --figures        also write DIR/figures/*.svg and DIR/index.html (Fig. 5-7, Table I)
-  --quiet          no progress on stderr
-  --help           this text
-)";
-
-struct Cli {
-  ExperimentOptions experiment;
-  std::filesystem::path out = "grasp_transfer_out";
-  bool quiet = false;
-  bool figures = false;
-};
-
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> parts;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ','))
-    if (!item.empty()) parts.push_back(item);
-  return parts;
-}
-
-template <class T>
-T parse_number(const std::string& text, const char* option) {
-  T value{};
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || end != text.data() + text.size())
-    throw std::invalid_argument(std::string(option) + ": expected a number, got \"" + text + "\"");
-  return value;
-}
-
-Cli parse(int argc, char** argv) {
-  Cli cli;
-  std::vector<std::string> objects{"hammer", "bottle"};
-  std::vector<std::string> methods{"topological", "transplant", "fingertip"};
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw std::invalid_argument(arg + ": expected a value");
-      return argv[++i];
-    };
-    if (arg == "--help" || arg == "-h") {
-      std::fputs(k_usage, stdout);
-      std::printf("\ntransfer parameters (default):\n");
-      const TransferOptions defaults;
-      for (const auto& [name, field] : transfer_parameters)
-        std::printf("  %-24s %g\n", std::string(name).c_str(), defaults.*field);
-      std::exit(0);
-    } else if (arg == "--objects") {
-      objects = split(value());
-    } else if (arg == "--methods") {
-      methods = split(value());
-    } else if (arg == "--out") {
-      cli.out = value();
-    } else if (arg == "--jobs") {
-      cli.experiment.jobs = parse_number<int>(value(), "--jobs");
-      if (cli.experiment.jobs < 1) throw std::invalid_argument("--jobs: expected at least 1");
-    } else if (arg == "--seed") {
-      cli.experiment.seed = parse_number<std::uint64_t>(value(), "--seed");
-    } else if (arg == "--max-hypotheses") {
-      cli.experiment.max_hypotheses = parse_number<int>(value(), "--max-hypotheses");
-    } else if (arg == "--shard") {
-      const std::string s = value();
-      const auto slash = s.find('/');
-      if (slash == std::string::npos)
-        throw std::invalid_argument("--shard: expected K/N, got \"" + s + "\"");
-      const int k = parse_number<int>(s.substr(0, slash), "--shard");
-      const int n = parse_number<int>(s.substr(slash + 1), "--shard");
-      if (n < 1 || k < 1 || k > n)
-        throw std::invalid_argument("--shard: expected 1 <= K <= N, got \"" + s + "\"");
-      cli.experiment.shard_index = k - 1;
-      cli.experiment.shard_count = n;
-    } else if (arg == "--winding-reference") {
-      cli.experiment.transfer.winding_reference = winding_reference(value());
-    } else if (arg == "--set") {
-      const std::string s = value();
-      const auto eq = s.find('=');
-      if (eq == std::string::npos)
-        throw std::invalid_argument("--set: expected NAME=VALUE, got \"" + s + "\"");
-      set_transfer_parameter(cli.experiment.transfer, s.substr(0, eq),
-                             parse_number<double>(s.substr(eq + 1), "--set"));
-    } else if (arg == "--figures") {
-      cli.figures = true;
-    } else if (arg == "--quiet") {
-      cli.quiet = true;
-    } else {
-      throw std::invalid_argument("unknown option \"" + arg + "\" (see --help)");
-    }
-  }
-  if (objects.empty()) throw std::invalid_argument("--objects: expected at least one object");
-  if (methods.empty()) throw std::invalid_argument("--methods: expected at least one method");
-  for (const std::string& name : objects) {
-    const auto o = objects::find(name);
-    if (!o) throw std::invalid_argument("--objects: unknown object \"" + name + "\"");
-    cli.experiment.objects.push_back(*o);
-  }
-  for (const std::string& name : methods) cli.experiment.methods.push_back(transfer_method(name));
-  return cli;
-}
 
 // Creates DIR/scenes and checks that DIR is writable, before any work is done.
 void prepare_output(const std::filesystem::path& out) {
@@ -205,7 +89,12 @@ void print_table(const ExperimentOptions& experiment, const std::vector<ObjectRe
 
 int main(int argc, char** argv) {
   try {
-    const Cli cli = parse(argc, argv);
+    const std::vector<std::string_view> args(argv + 1, argv + argc);
+    const CommandLine cli = parse_command_line(args);
+    if (cli.help) {
+      std::fputs(command_line_usage().c_str(), stdout);
+      return 0;
+    }
     prepare_output(cli.out);
     const auto t0 = std::chrono::steady_clock::now();
     ProgressFn progress;

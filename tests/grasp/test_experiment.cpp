@@ -213,8 +213,8 @@ TEST_CASE("transfer parameters are set and recorded by name", "[grasp][bad-input
   c.transfer = o;
   const Json doc = results_json(c, {});
   const Json& t = doc.at("config").at("transfer");
-  for (const auto& [name, field] : transfer_parameters)
-    CHECK(t.at(std::string(name)).as_number() == o.*field);
+  for (const TransferParameter& p : transfer_parameters)
+    CHECK(t.at(std::string(p.name)).as_number() == o.*(p.field));
   CHECK(t.at("final_approach").as_number() == 0.1);
   CHECK(t.at("winding_reference").as_string() == "centre_of_mass");
 }

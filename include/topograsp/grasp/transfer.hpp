@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -124,42 +125,94 @@ struct TransferOptions {
   double fingertip_scale = 0.0;
 };
 
-/// The numeric parameters of TransferOptions that a command line or a result file names, each a
-/// double >= 0 (grasp_transfer --set NAME=VALUE; the "transfer" object of results.json).
-inline constexpr std::array<std::pair<std::string_view, double TransferOptions::*>, 13>
-    transfer_parameters{{
-        {"backoff", &TransferOptions::backoff},
-        {"winding_precision_mid", &TransferOptions::winding_precision_mid},
-        {"winding_precision_end", &TransferOptions::winding_precision_end},
-        {"collision_margin", &TransferOptions::collision_margin},
-        {"collision_precision", &TransferOptions::collision_precision},
-        {"approach_precision_mid", &TransferOptions::approach_precision_mid},
-        {"approach_precision_end", &TransferOptions::approach_precision_end},
-        {"line_precision_mid", &TransferOptions::line_precision_mid},
-        {"line_precision_end", &TransferOptions::line_precision_end},
-        {"limit_precision", &TransferOptions::limit_precision},
-        {"final_approach", &TransferOptions::final_approach},
-        {"fingertip_prior", &TransferOptions::fingertip_prior},
-        {"fingertip_scale", &TransferOptions::fingertip_scale},
-    }};
+/// One numeric parameter of TransferOptions that a command line or a result file names: its name,
+/// its field, its valid range [min, max] (inclusive) and a one-line meaning with its unit.
+struct TransferParameter {
+  std::string_view name;
+  double TransferOptions::* field;
+  double min;
+  double max;
+  std::string_view meaning;
+};
+
+/// The numeric parameters of TransferOptions (grasp_transfer --set NAME=VALUE; the "transfer"
+/// object of results.json), each with the range set_transfer_parameter accepts. Lengths are in
+/// m, precisions are task weights (per m^2 for the line task); 0 switches a task's term off.
+inline constexpr std::array<TransferParameter, 13> transfer_parameters{{
+    {"backoff", &TransferOptions::backoff, 0.0, 0.3,
+     "m: the human grasp centre's start beyond the SDH's, along the approach"},
+    {"winding_precision_mid", &TransferOptions::winding_precision_mid, 0.0, 1e6,
+     "the winding targets on the way"},
+    {"winding_precision_end", &TransferOptions::winding_precision_end, 0.0, 1e6,
+     "the winding targets at the end"},
+    {"collision_margin", &TransferOptions::collision_margin, 0.0, 0.1,
+     "m: the collision task's margin"},
+    {"collision_precision", &TransferOptions::collision_precision, 0.0, 1e6, "the collision task"},
+    {"approach_precision_mid", &TransferOptions::approach_precision_mid, 0.0, 1e6,
+     "the SDH's approach axis along the human's, on the way"},
+    {"approach_precision_end", &TransferOptions::approach_precision_end, 0.0, 1e6,
+     "the SDH's approach axis along the human's, at the end"},
+    {"line_precision_mid", &TransferOptions::line_precision_mid, 0.0, 1e6,
+     "per m^2: the SDH's grasp centre on the human's approach line"},
+    {"line_precision_end", &TransferOptions::line_precision_end, 0.0, 1e6,
+     "per m^2: the same at the end"},
+    {"limit_precision", &TransferOptions::limit_precision, 0.0, 1e6, "the joint-limit penalty"},
+    {"final_approach", &TransferOptions::final_approach, 0.0, 1.0,
+     "m: how far the planned hand may move on to touch"},
+    {"fingertip_prior", &TransferOptions::fingertip_prior, 0.0, 1.0,
+     "per m^2 or rad^2: the fingertip fit's pull to the transplant"},
+    {"fingertip_scale", &TransferOptions::fingertip_scale, 0.0, 10.0,
+     "the human tips' scale; 0 derives it (2.175)"},
+}};
+
+/// The entry of transfer_parameters called \p name, or nullptr.
+[[nodiscard]] constexpr const TransferParameter* find_transfer_parameter(
+    std::string_view name) noexcept {
+  for (const TransferParameter& p : transfer_parameters)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+namespace detail {
+// "[0, 0.3]": a parameter's range as the messages and --help print it.
+inline std::string parameter_range(const TransferParameter& p) {
+  char b[64];
+  std::snprintf(b, sizeof b, "[%g, %g]", p.min, p.max);
+  return b;
+}
+// Throws naming "value" unless v is in p's range (NaN is not).
+inline void check_parameter_value(const TransferParameter& p, double v) {
+  if (!(v >= p.min && v <= p.max)) {
+    char got[32];
+    std::snprintf(got, sizeof got, "%g", v);
+    throw_invalid_argument("value", std::string(p.name) + " must be in " + parameter_range(p) +
+                                        " (" + std::string(p.meaning) + "), got " + got);
+  }
+}
+}  // namespace detail
 
 /// Sets the parameter called \p name (one of transfer_parameters) of \p options to \p value.
 /// \throws topograsp::invalid_argument naming "name" (unknown; the message lists the names) or
-/// "value" (negative or not finite); \p options is unchanged then.
+/// "value" (outside the parameter's range, or not finite; the message names the parameter and
+/// its range); \p options is unchanged then.
 inline void set_transfer_parameter(TransferOptions& options, std::string_view name, double value) {
-  for (const auto& [known, field] : transfer_parameters) {
-    if (known != name) continue;
-    if (!std::isfinite(value) || value < 0.0)
-      detail::throw_invalid_argument(
-          "value", std::string(name) + " must be finite and >= 0, got " + std::to_string(value));
-    options.*field = value;
+  if (const TransferParameter* p = find_transfer_parameter(name)) {
+    detail::check_parameter_value(*p, value);
+    options.*(p->field) = value;
     return;
   }
   std::string names;
-  for (const auto& p : transfer_parameters)
-    names += (names.empty() ? "" : ", ") + std::string(p.first);
+  for (const TransferParameter& p : transfer_parameters)
+    names += (names.empty() ? "" : ", ") + std::string(p.name);
   detail::throw_invalid_argument("name", "unknown transfer parameter \"" + std::string(name) +
                                              "\" (expected one of " + names + ")");
+}
+
+/// Checks every parameter of transfer_parameters in \p options against its range.
+/// \throws topograsp::invalid_argument naming "value" and the first parameter out of range.
+inline void validate_transfer_parameters(const TransferOptions& options) {
+  for (const TransferParameter& p : transfer_parameters)
+    detail::check_parameter_value(p, options.*(p.field));
 }
 
 /// A transferred grasp: where the SDH ended (object frame), how it was planned, the shake test.

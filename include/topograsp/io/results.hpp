@@ -67,8 +67,8 @@ inline Json json_vector(const auto& v) {
   cfg.set("shake_steps", options.transfer.sim.shake.shake_steps);
   cfg.set("aico_steps", options.transfer.aico.steps);
   Json transfer = Json::object();
-  for (const auto& [name, field] : transfer_parameters)
-    transfer.set(std::string(name), options.transfer.*field);
+  for (const TransferParameter& p : transfer_parameters)
+    transfer.set(std::string(p.name), options.transfer.*(p.field));
   transfer.set("winding_reference", std::string(to_string(options.transfer.winding_reference)));
   cfg.set("transfer", transfer);
   Json out_objects = Json::array();

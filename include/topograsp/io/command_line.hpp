@@ -1,0 +1,292 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// The command line of grasp_transfer as a library function: parse_command_line turns the
+/// arguments into an ExperimentOptions, the output folder and the flags, or throws
+/// topograsp::invalid_argument naming the option; command_line_usage is the --help text.
+#pragma once
+
+#include <charconv>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
+#include <topograsp/grasp/experiment.hpp>
+
+namespace topograsp {
+
+/// What the command line of grasp_transfer asks for.
+struct CommandLine {
+  /// The experiment: objects and methods are filled (default hammer, bottle and all three
+  /// methods, in the order given), every other field as parsed or its default.
+  ExperimentOptions experiment;
+  std::filesystem::path out = "grasp_transfer_out";  ///< --out: the output folder (non-empty)
+  bool quiet = false;    ///< --quiet: no progress lines (warnings are still printed)
+  bool figures = false;  ///< --figures: also DIR/figures/*.svg and DIR/index.html
+  bool force = false;    ///< --force: write into a non-empty folder that holds no earlier run
+  bool help = false;     ///< --help or -h: print command_line_usage() and do nothing else
+};
+
+/// The largest --jobs accepted.
+inline constexpr int max_command_line_jobs = 1024;
+
+namespace detail {
+
+// s in double quotes for a message: bytes outside printable ASCII as \xNN, at most 80 bytes shown.
+inline std::string quote_argument(std::string_view s) {
+  std::string q = "\"";
+  const std::size_t shown = std::min<std::size_t>(s.size(), 80);
+  for (std::size_t i = 0; i < shown; ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c < 0x20 || c >= 0x7f || c == '"' || c == '\\') {
+      char b[8];
+      std::snprintf(b, sizeof b, "\\x%02x", static_cast<unsigned>(c));
+      q += b;
+    } else {
+      q += static_cast<char>(c);
+    }
+  }
+  if (shown < s.size()) q += "...";
+  return q + "\"";
+}
+
+// The whole of text as a T, or an error naming option.
+template <class T>
+T parse_cli_number(std::string_view text, std::string_view option) {
+  T value{};
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec == std::errc::result_out_of_range)
+    throw_invalid_argument(option, "number out of range: " + quote_argument(text));
+  if (ec != std::errc() || end != text.data() + text.size())
+    throw_invalid_argument(option, "expected a number, got " + quote_argument(text));
+  return value;
+}
+
+// The comma-separated names of list; an empty name or a repeated one is an error naming option.
+inline std::vector<std::string_view> split_cli_list(std::string_view list,
+                                                    std::string_view option) {
+  std::vector<std::string_view> names;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = list.find(',', start);
+    const std::string_view name = list.substr(
+        start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
+    if (name.empty())
+      throw_invalid_argument(
+          option, "empty name in " + quote_argument(list) + " (expected comma-separated names)");
+    for (const std::string_view seen : names)
+      if (seen == name)
+        throw_invalid_argument(option,
+                               quote_argument(name) + " is given twice in " + quote_argument(list));
+    names.push_back(name);
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return names;
+}
+
+inline std::string expected_names(const std::vector<std::string>& names) {
+  std::string s;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    s += (i == 0 ? "" : (i + 1 == names.size() ? " or " : ", ")) + names[i];
+  return s;
+}
+
+}  // namespace detail
+
+/// Parses the arguments of grasp_transfer (\p args without the program name; the options are
+/// listed by command_line_usage()). An option's value is the next argument; it may not be empty
+/// nor start with "--". `--help` (or `-h`) returns at once with help set, ignoring what follows.
+/// \throws topograsp::invalid_argument, and nothing else, whose message starts with the offending
+/// option (e.g. "--out: expected a value, got the option \"--jobs\"") for: an unknown option, a
+/// missing, empty or "--" value, a value option given twice, a number that does not parse or is
+/// out of range (--jobs 1..1024, --max-hypotheses >= 0, --shard K/N with 1 <= K <= N, --seed an
+/// unsigned 64-bit integer), an unknown, empty or repeated object or method, an unknown
+/// --winding-reference, a --set that is not NAME=VALUE, names an unknown parameter, sets one twice
+/// or a value outside its range (transfer_parameters), and an --out with a NUL character.
+[[nodiscard]] inline CommandLine parse_command_line(std::span<const std::string_view> args) {
+  CommandLine cli;
+  std::string_view objects_list = "hammer,bottle";
+  std::string_view methods_list = "topological,transplant,fingertip";
+  std::vector<std::string_view> seen;  // value options given so far
+  std::vector<std::string_view> set_names;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string_view arg = args[i];
+    if (arg == "--help" || arg == "-h") {
+      cli.help = true;
+      return cli;
+    }
+    if (arg == "--figures") {
+      cli.figures = true;
+      continue;
+    }
+    if (arg == "--quiet") {
+      cli.quiet = true;
+      continue;
+    }
+    if (arg == "--force") {
+      cli.force = true;
+      continue;
+    }
+    constexpr std::string_view value_options[] = {
+        "--objects", "--methods",           "--out", "--jobs", "--seed", "--max-hypotheses",
+        "--shard",   "--winding-reference", "--set"};
+    bool known = false;
+    for (const std::string_view o : value_options) known = known || o == arg;
+    if (!known)
+      detail::throw_invalid_argument(
+          arg.empty() ? std::string_view("argument") : arg,
+          "unknown option " + detail::quote_argument(arg) + " (see --help)");
+    if (i + 1 >= args.size()) detail::throw_invalid_argument(arg, "expected a value");
+    const std::string_view value = args[++i];
+    if (value.empty()) detail::throw_invalid_argument(arg, "expected a value, got \"\"");
+    if (value.starts_with("--"))
+      detail::throw_invalid_argument(
+          arg, "expected a value, got the option " + detail::quote_argument(value));
+    if (arg != "--set") {
+      for (const std::string_view s : seen)
+        if (s == arg) detail::throw_invalid_argument(arg, "given twice");
+      seen.push_back(arg);
+    }
+    if (arg == "--objects") {
+      objects_list = value;
+    } else if (arg == "--methods") {
+      methods_list = value;
+    } else if (arg == "--out") {
+      if (value.find('\0') != std::string_view::npos)
+        detail::throw_invalid_argument(arg, "the folder name contains a NUL character");
+      cli.out = std::filesystem::path(std::string(value));
+    } else if (arg == "--jobs") {
+      const int jobs = detail::parse_cli_number<int>(value, arg);
+      if (jobs < 1 || jobs > max_command_line_jobs)
+        detail::throw_invalid_argument(arg, "expected 1 to " +
+                                                std::to_string(max_command_line_jobs) + ", got " +
+                                                std::to_string(jobs));
+      cli.experiment.jobs = jobs;
+    } else if (arg == "--seed") {
+      cli.experiment.seed = detail::parse_cli_number<std::uint64_t>(value, arg);
+    } else if (arg == "--max-hypotheses") {
+      const int m = detail::parse_cli_number<int>(value, arg);
+      if (m < 0)
+        detail::throw_invalid_argument(arg,
+                                       "expected a count >= 0 (0: all), got " + std::to_string(m));
+      cli.experiment.max_hypotheses = m;
+    } else if (arg == "--shard") {
+      const std::size_t slash = value.find('/');
+      if (slash == std::string_view::npos)
+        detail::throw_invalid_argument(arg, "expected K/N, got " + detail::quote_argument(value));
+      const int k = detail::parse_cli_number<int>(value.substr(0, slash), arg);
+      const int n = detail::parse_cli_number<int>(value.substr(slash + 1), arg);
+      if (n < 1 || k < 1 || k > n)
+        detail::throw_invalid_argument(
+            arg, "expected 1 <= K <= N, got " + detail::quote_argument(value));
+      cli.experiment.shard_index = k - 1;
+      cli.experiment.shard_count = n;
+    } else if (arg == "--winding-reference") {
+      cli.experiment.transfer.winding_reference =
+          enum_from_name(value, {WindingReference::centre_of_mass, WindingReference::nearest_point},
+                         arg, "reference");
+    } else {  // --set
+      const std::size_t eq = value.find('=');
+      if (eq == std::string_view::npos || eq == 0 || eq + 1 == value.size())
+        detail::throw_invalid_argument(arg,
+                                       "expected NAME=VALUE, got " + detail::quote_argument(value));
+      const std::string_view name = value.substr(0, eq);
+      // set_transfer_parameter's message ("name: ..." or "value: ..."), after the option.
+      const auto set = [&](double v) {
+        try {
+          set_transfer_parameter(cli.experiment.transfer, name, v);
+        } catch (const invalid_argument& e) {
+          detail::throw_invalid_argument(arg, e.what());
+        }
+      };
+      const TransferParameter* p = find_transfer_parameter(name);
+      if (p == nullptr) set(0.0);  // throws: unknown parameter, the known ones listed
+      for (const std::string_view s : set_names)
+        if (s == name) detail::throw_invalid_argument(arg, std::string(name) + " is set twice");
+      set_names.push_back(name);
+      set(detail::parse_cli_number<double>(value.substr(eq + 1), "--set " + std::string(name)));
+    }
+  }
+  std::vector<std::string> object_names = objects::names();
+  for (const std::string_view name : detail::split_cli_list(objects_list, "--objects")) {
+    std::optional<GraspObject> o = objects::find(name);
+    if (!o)
+      detail::throw_invalid_argument("--objects", "unknown object " + detail::quote_argument(name) +
+                                                      " (expected " +
+                                                      detail::expected_names(object_names) + ")");
+    cli.experiment.objects.push_back(std::move(*o));
+  }
+  for (const std::string_view name : detail::split_cli_list(methods_list, "--methods"))
+    cli.experiment.methods.push_back(enum_from_name(
+        name, {TransferMethod::topological, TransferMethod::transplant, TransferMethod::fingertip},
+        "--methods", "method"));
+  return cli;
+}
+
+/// The --help text of grasp_transfer: the options, the output folder rule, the exit statuses and
+/// the table of transfer parameters (name, default, valid range, meaning).
+[[nodiscard]] inline std::string command_line_usage() {
+  std::string text = R"(usage: grasp_transfer [options]
+
+Transfers stable human grasps to the Schunk SDH (on a 7-DOF arm) and tests every result in
+simulation, as in "Topological Synergies for Grasp Transfer" (Table I).
+
+options:
+  --objects LIST   comma-separated objects, each once (default hammer,bottle; also mug, box,
+                   ball, can)
+  --methods LIST   comma-separated methods, each once (default topological,transplant,fingertip)
+  --out DIR        the output folder (default grasp_transfer_out; see below)
+  --force          write into DIR even if it is not empty and holds no earlier run
+  --jobs N         worker threads, 1 to 1024 (default 1); if fewer threads can be started, the
+                   run goes on with those and says so
+  --seed S         seed of the shake tests (default 1); same seed, same results
+  --shard K/N      run only hypotheses with id % N == K - 1 (1 <= K <= N), for job arrays; the
+                   shards together give exactly the records of the whole run
+  --max-hypotheses M  only the first M hypotheses of each object (default 0: all)
+  --winding-reference R  where the windings are taken: centre_of_mass (default, the paper)
+                   or nearest_point (the object's point nearest the human's grasp centre)
+  --set NAME=VALUE  set a transfer parameter (repeatable, each name once; the names, defaults
+                   and valid ranges are listed below, their meaning in docs/transfer.md)
+  --figures        also write DIR/figures/*.svg and DIR/index.html (Fig. 5-7, Table I)
+  --quiet          no progress on stderr (warnings are still printed)
+  --help, -h       this text
+
+An option's value may not be empty nor start with "--".
+
+output folder: the run owns DIR/results.json, DIR/scenes/, DIR/figures/ and DIR/index.html.
+Everything is first written into DIR/.grasp_transfer-staging-<id>/, then committed: the old
+results.json is removed, scenes/, figures/ and index.html are replaced entirely (an earlier run's
+are removed even if this run writes none), and results.json is renamed into place last. A run
+that fails or is interrupted before the commit leaves the previous run untouched (its staging
+folder is removed by the next run into DIR); a results.json always describes exactly the scenes
+beside it. DIR is checked before any work: a non-empty DIR without a results.json of
+grasp_transfer is refused unless --force; DIR/results.json and DIR/index.html must be files,
+DIR/scenes and DIR/figures folders. Other files in DIR are left alone.
+
+exit status: 0 done; 2 bad arguments or an unusable output folder (nothing was computed);
+1 the run failed after it started (the previous run in DIR is untouched).
+
+transfer parameters (--set NAME=VALUE):
+)";
+  const TransferOptions defaults;
+  char line[256];
+  std::snprintf(line, sizeof line, "  %-24s %-9s %-12s %s\n", "name", "default", "range",
+                "meaning");
+  text += line;
+  for (const TransferParameter& p : transfer_parameters) {
+    char value[32];
+    std::snprintf(value, sizeof value, "%g", defaults.*(p.field));
+    std::snprintf(line, sizeof line, "  %-24s %-9s %-12s %s\n", std::string(p.name).c_str(), value,
+                  detail::parameter_range(p).c_str(), std::string(p.meaning).c_str());
+    text += line;
+  }
+  return text;
+}
+
+}  // namespace topograsp
