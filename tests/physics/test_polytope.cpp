@@ -46,7 +46,13 @@ TEST_CASE("degenerate polytope sizes throw naming the size", "[physics][polytope
   test::check_throws_naming([&] { (void)cylinder_polytope<float>(tiny, 1.0f); }, "radius");
   test::check_throws_naming([] { (void)box_polytope<double>(Eigen::Vector3d(1.0, 1.0, 1e308)); },
                             "h");
-  // Positive, but too thin for float to order the vertices of the prism's sides.
+  // Positive, but too thin to order the vertices of the prism's sides (in double, 1e-17 gave more
+  // than the 48 edges a polytope holds; 1e-16 is still resolved).
+  const Polytope<double> thin = cylinder_polytope<double>(1.0, 1e-16);
+  CHECK(thin.n_edges == Polytope<double>::max_edges);
+  CHECK(thin.n_vertices - thin.n_edges + thin.n_faces == 2);
+  test::check_throws_naming([] { (void)cylinder_polytope<double>(1.0, 1e-17); }, "half_height");
+  test::check_throws_naming([] { (void)cylinder_polytope<double>(1e-16, 1.0); }, "radius");
   test::check_throws_naming([] { (void)cylinder_polytope<float>(1.0f, 1e-30f); }, "half_height");
 }
 

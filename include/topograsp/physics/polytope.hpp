@@ -75,10 +75,17 @@ void add_face(Polytope<S>& P, const V3<S>& n, const int* ids_in, int k) {
         ids[static_cast<std::size_t>(i)];
 }
 
+[[noreturn]] inline void throw_too_thin(std::string_view argument) {
+  throw_invalid_argument(argument,
+                         "the shape is too thin for its scalar type: the vertices of its faces "
+                         "cannot be ordered");
+}
+
 // Collects the edges of the faces (each once) and their distinct directions (up to sign). Throws
 // topograsp::invalid_argument naming \p argument if an edge has no direction in S (the shape's
-// size is zero, or too small for S: its vertices coincide), or if there are more directions than
-// the polytope holds (a face so thin that add_face() could not order its vertices in S).
+// size is zero, or too small for S: its vertices coincide), or if a face so thin that add_face()
+// could not order its vertices in S gives more edges or directions than the polytope holds or
+// breaks Euler's formula.
 template <class S>
 void finish_edges(Polytope<S>& P, std::string_view argument) {
   for (int f = 0; f < P.n_faces; ++f) {
@@ -92,6 +99,7 @@ void finish_edges(Polytope<S>& P, std::string_view argument) {
       for (int e = 0; e < P.n_edges && !seen; ++e)
         seen = P.edges[static_cast<std::size_t>(e)] == std::array<int, 2>{a, b};
       if (seen) continue;
+      if (P.n_edges == Polytope<S>::max_edges) throw_too_thin(argument);
       const auto e = static_cast<std::size_t>(P.n_edges++);
       P.edges[e] = {a, b};
       const V3<S> edge =
@@ -109,17 +117,16 @@ void finish_edges(Polytope<S>& P, std::string_view argument) {
       for (int k = 0; k < P.n_directions && dir < 0; ++k)
         if (std::abs(P.directions[static_cast<std::size_t>(k)].dot(d)) > S(1) - S(1e-5)) dir = k;
       if (dir < 0) {
-        if (P.n_directions == Polytope<S>::max_directions)
-          detail::throw_invalid_argument(argument,
-                                         "the shape is too thin for its scalar type: its faces' "
-                                         "vertices cannot be ordered, giving more edge directions "
-                                         "than a polytope holds");
+        if (P.n_directions == Polytope<S>::max_directions) throw_too_thin(argument);
         dir = P.n_directions++;
         P.directions[static_cast<std::size_t>(dir)] = d;
       }
       P.edge_direction[e] = dir;
     }
   }
+  // A closed convex polyhedron has V - E + F = 2; a face whose loop came out of order (a diagonal
+  // taken for an edge) breaks it.
+  if (P.n_vertices - P.n_edges + P.n_faces != 2) throw_too_thin(argument);
 }
 
 }  // namespace detail
