@@ -99,7 +99,8 @@ inline std::string failure_kind(std::string_view target, std::string_view what) 
       in_number = false;
       continue;
     }
-    const bool digit = c >= '0' && c <= '9';
+    const bool digit = (c >= '0' && c <= '9') || (c == '-' && i + 1 < what.size() &&
+                                                  what[i + 1] >= '0' && what[i + 1] <= '9');
     const bool part = digit || (in_number && (c == '.' || c == 'e' || c == '-' || c == '+'));
     if (part) {
       if (!in_number) kind += '#';
@@ -135,7 +136,7 @@ int run_input(const std::uint8_t* data, std::size_t size, F&& body) {
 /// Sanitizer reports still abort.
 [[noreturn]] inline void fuzz_fail(std::string_view target, std::string_view what,
                                    std::string_view input) {
-  if (const char* dir = std::getenv("TOPOGRASP_FUZZ_SURVEY")) {
+  if (const char* dir = std::getenv("TOPOGRASP_FUZZ_SURVEY"); dir != nullptr && *dir != 0) {
     static std::set<std::string> seen;
     if (seen.insert(detail::failure_kind(target, what)).second) {
       const std::string path =

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Fuzz target: Json::parse (io/json.hpp) on any bytes.
 //
+// - parse() is the strict reader it says it is: what it accepts has no \u escape without 4 hex
+//   digits and no number outside JSON's grammar (leading zeros, "+1", ".5", "1.").
 // - Only topograsp::invalid_argument may escape parse() (its documented error); anything else
 //   (std::invalid_argument from a std::sto*, std::out_of_range, std::length_error, ...) is a
 //   failure.
@@ -82,6 +84,67 @@ std::string difference(const Json& a, const Json& b, const std::string& path) {
   return {};
 }
 
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+bool is_hex(char c) { return is_digit(c) || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'); }
+
+// What in \p t (text that parse() accepted) is not JSON (RFC 8259), for the two things a lenient
+// reader gets wrong: a \u escape without 4 hex digits and a number outside JSON's grammar
+// -?(0|[1-9][0-9]*)(.[0-9]+)?([eE][+-]?[0-9]+)?. "" if neither occurs.
+std::string not_json(std::string_view t) {
+  for (std::size_t i = 0; i < t.size();) {
+    if (t[i] == '"') {
+      for (++i; i < t.size() && t[i] != '"'; ++i) {
+        if (t[i] != '\\') continue;
+        ++i;
+        if (i < t.size() && t[i] == 'u') {
+          for (std::size_t k = 1; k <= 4; ++k)
+            if (i + k >= t.size() || !is_hex(t[i + k]))
+              return "a \\u escape without 4 hex digits at offset " + std::to_string(i - 1);
+          i += 4;
+        }
+      }
+      ++i;
+      continue;
+    }
+    if (t[i] == '-' || t[i] == '+' || t[i] == '.' || is_digit(t[i])) {
+      const std::size_t start = i;
+      std::size_t j = i;
+      bool ok = true;
+      if (t[j] == '-') ++j;
+      if (j < t.size() && t[j] == '0') {
+        ++j;
+      } else if (j < t.size() && is_digit(t[j])) {
+        while (j < t.size() && is_digit(t[j])) ++j;
+      } else {
+        ok = false;
+      }
+      if (ok && j < t.size() && t[j] == '.') {
+        ++j;
+        ok = j < t.size() && is_digit(t[j]);
+        while (j < t.size() && is_digit(t[j])) ++j;
+      }
+      if (ok && j < t.size() && (t[j] == 'e' || t[j] == 'E')) {
+        ++j;
+        if (j < t.size() && (t[j] == '+' || t[j] == '-')) ++j;
+        ok = j < t.size() && is_digit(t[j]);
+        while (j < t.size() && is_digit(t[j])) ++j;
+      }
+      // The number token ends at the first character that cannot continue it.
+      std::size_t end = start;
+      while (end < t.size() && (is_digit(t[end]) || t[end] == '-' || t[end] == '+' ||
+                                t[end] == '.' || t[end] == 'e' || t[end] == 'E'))
+        ++end;
+      if (!ok || j != end)
+        return "the number " + quoted(t.substr(start, end - start)) + " at offset " +
+               std::to_string(start);
+      i = end;
+      continue;
+    }
+    ++i;
+  }
+  return {};
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -98,6 +161,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                     " (not topograsp::invalid_argument): " + e.what(),
                 "text = " + quoted(text));
     }
+    if (const std::string bad = not_json(text); !bad.empty())
+      fuzz_fail("json", "parse accepted text that is not JSON: " + bad, "text = " + quoted(text));
     for (const int indent : {0, 2}) {
       const std::string dumped = value.dump(indent);
       Json again;
