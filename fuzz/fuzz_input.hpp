@@ -84,14 +84,24 @@ inline std::size_t current_size = 0;
 /// handler of a target takes it for the library's.
 struct SurveyedFailure {};
 
-/// \p what with every number replaced by '#' and every quoted text by "": failures of one kind
-/// share it.
+/// \p what with every number replaced by '#', every quoted text by "" and the insides of
+/// parentheses and brackets (vectors, matrices) left out: failures of one kind share it.
 inline std::string failure_kind(std::string_view target, std::string_view what) {
   std::string kind(target);
   kind += ": ";
   bool in_number = false;
+  int depth = 0;
   for (std::size_t i = 0; i < what.size(); ++i) {
     const char c = what[i];
+    if (c == '(' || c == '[') {
+      if (depth++ == 0) kind += c;
+      continue;
+    }
+    if (c == ')' || c == ']') {
+      if (depth > 0 && --depth == 0) kind += c;
+      continue;
+    }
+    if (depth > 0) continue;
     if (c == '"') {
       for (++i; i < what.size() && what[i] != '"'; ++i)
         if (what[i] == '\\') ++i;
