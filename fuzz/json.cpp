@@ -175,10 +175,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
       const std::string d = difference(value, again, "$");
       if (!d.empty())
-        fuzz_fail(
-            "json",
-            "dump (indent " + std::to_string(indent) + ") and parse changed the value at " + d,
-            "text = " + quoted(text) + "\ndump = " + quoted(dumped));
+        fuzz_fail("json",
+                  "dump (indent " + std::to_string(indent) + ") and parse changed the value",
+                  "text = " + quoted(text) + "\ndump = " + quoted(dumped) + "\nat " + quoted(d));
     }
   });
 }
