@@ -245,3 +245,28 @@ TEST_CASE("primitives and composites reject bad input naming the argument", "[ge
   CHECK_THROWS_AS(Composite({broken}), invalid_argument);
   CHECK_THROWS_WITH(Composite({broken}), Catch::StartsWith("parts"));
 }
+
+// Found by fuzz/narrow_phase
+// (fuzz/regressions/narrow_phase/signed_distance_coincident_boxes_positive): two boxes with the
+// same centre whose faces coincide (rotations equal up to 7e-13) stalled GJK on a flat simplex
+// through the origin, and the overlap of 2 mm came out as a separation of +3.6e-11 m.
+TEST_CASE("signed_distance of boxes with coinciding centres and faces is their overlap",
+          "[geometry][signed_distance]") {
+  Primitive a;
+  a.type = ShapeType::box;
+  a.p = Vec3(-3.0, -3.0, -3.0);
+  a.R << 0, 0, 1, 1, 0, 0, 0, 1, 0;
+  a.size = Vec3(0.001, 0.0010000000004173116, 1.5218078431372548);
+  Primitive b = a;
+  b.size = Vec3(0.001, 0.001, 0.001);
+  b.R << -6.8967054289714724e-13, 6.8961503174591599e-13, 1, 1, -6.8967054289714724e-13,
+      6.8961503174591599e-13, 6.8961503174591599e-13, 1, -6.8967054289714724e-13;
+  const Contact c = signed_distance(a, b);
+  CHECK(c.distance == Approx(-0.002).margin(1e-6));
+  // The same with exactly equal rotations, and offset along the long axis.
+  Primitive e = b;
+  e.R = a.R;
+  CHECK(signed_distance(a, e).distance == Approx(-0.002).margin(1e-6));
+  e.p += 0.5 * a.R.col(2);
+  CHECK(signed_distance(a, e).distance == Approx(-0.002).margin(1e-6));
+}

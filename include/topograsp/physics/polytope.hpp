@@ -7,8 +7,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
+#include <string_view>
 
 #include <topograsp/core/constants.hpp>
+#include <topograsp/core/error.hpp>
 #include <topograsp/model/spec.hpp>
 #include <topograsp/physics/detail/math.hpp>
 
@@ -72,9 +75,19 @@ void add_face(Polytope<S>& P, const V3<S>& n, const int* ids_in, int k) {
         ids[static_cast<std::size_t>(i)];
 }
 
-// Collects the edges of the faces (each once) and their distinct directions (up to sign).
+[[noreturn]] inline void throw_too_thin(std::string_view argument) {
+  throw_invalid_argument(argument,
+                         "the shape is too thin for its scalar type: the vertices of its faces "
+                         "cannot be ordered");
+}
+
+// Collects the edges of the faces (each once) and their distinct directions (up to sign). Throws
+// topograsp::invalid_argument naming \p argument if an edge has no direction in S (the shape's
+// size is zero, or too small for S: its vertices coincide), or if a face so thin that add_face()
+// could not order its vertices in S gives more edges or directions than the polytope holds or
+// breaks Euler's formula.
 template <class S>
-void finish_edges(Polytope<S>& P) {
+void finish_edges(Polytope<S>& P, std::string_view argument) {
   for (int f = 0; f < P.n_faces; ++f) {
     const auto fu = static_cast<std::size_t>(f);
     for (int i = 0; i < P.face_size[fu]; ++i) {
@@ -86,29 +99,45 @@ void finish_edges(Polytope<S>& P) {
       for (int e = 0; e < P.n_edges && !seen; ++e)
         seen = P.edges[static_cast<std::size_t>(e)] == std::array<int, 2>{a, b};
       if (seen) continue;
+      if (P.n_edges == Polytope<S>::max_edges) throw_too_thin(argument);
       const auto e = static_cast<std::size_t>(P.n_edges++);
       P.edges[e] = {a, b};
-      const V3<S> d =
-          (P.vertices[static_cast<std::size_t>(b)] - P.vertices[static_cast<std::size_t>(a)])
-              .normalized();
+      const V3<S> edge =
+          P.vertices[static_cast<std::size_t>(b)] - P.vertices[static_cast<std::size_t>(a)];
+      const S largest = edge.cwiseAbs().maxCoeff(), squared = edge.squaredNorm();
+      if (!(largest > S(0)) || !std::isfinite(largest))
+        detail::throw_invalid_argument(argument,
+                                       "the shape is too small (or too large) for its scalar type: "
+                                       "two of its polytope's vertices coincide");
+      // An edge whose squared length underflows or overflows is scaled by its largest entry first.
+      const V3<S> d = squared >= std::numeric_limits<S>::min() && std::isfinite(squared)
+                          ? V3<S>(edge.normalized())
+                          : V3<S>((edge / largest).normalized());
       int dir = -1;
       for (int k = 0; k < P.n_directions && dir < 0; ++k)
         if (std::abs(P.directions[static_cast<std::size_t>(k)].dot(d)) > S(1) - S(1e-5)) dir = k;
       if (dir < 0) {
+        if (P.n_directions == Polytope<S>::max_directions) throw_too_thin(argument);
         dir = P.n_directions++;
         P.directions[static_cast<std::size_t>(dir)] = d;
       }
       P.edge_direction[e] = dir;
     }
   }
+  // A closed convex polyhedron has V - E + F = 2; a face whose loop came out of order (a diagonal
+  // taken for an edge) breaks it.
+  if (P.n_vertices - P.n_edges + P.n_faces != 2) throw_too_thin(argument);
 }
 
 }  // namespace detail
 
 /// The polytope of a box with half extents \p h, centred at the origin.
+/// \throws topograsp::invalid_argument naming "h" if an entry is not finite and positive, or so
+///         small next to the others that S cannot resolve the box's faces.
 template <class S = double>
 [[nodiscard]] Polytope<S> box_polytope(const detail::V3<S>& h) {
   using detail::V3;
+  for (int k = 0; k < 3; ++k) require_positive(static_cast<double>(h[k]), "h");
   Polytope<S> P;
   for (int i = 0; i < 8; ++i)
     P.vertices[static_cast<std::size_t>(i)] =
@@ -129,15 +158,19 @@ template <class S = double>
   P.directions[0] = V3<S>::UnitX();
   P.directions[1] = V3<S>::UnitY();
   P.directions[2] = V3<S>::UnitZ();
-  detail::finish_edges<S>(P);
+  detail::finish_edges<S>(P, "h");
   return P;
 }
 
 /// The polytope of a cylinder of \p radius and \p half_height along z: a prism with
 /// cylinder_prism_sides sides whose vertices lie on the cylinder.
+/// \throws topograsp::invalid_argument naming "radius" or "half_height" if it is not finite and
+///         positive, or so small next to the other that S cannot resolve the prism's faces.
 template <class S = double>
 [[nodiscard]] Polytope<S> cylinder_polytope(S radius, S half_height) {
   using detail::V3;
+  require_positive(static_cast<double>(radius), "radius");
+  require_positive(static_cast<double>(half_height), "half_height");
   constexpr int n = cylinder_prism_sides;
   Polytope<S> P;
   P.prism = true;
@@ -164,7 +197,7 @@ template <class S = double>
   }
   P.n_directions = 1;
   P.directions[0] = V3<S>::UnitZ();
-  detail::finish_edges<S>(P);
+  detail::finish_edges<S>(P, half_height < radius ? "half_height" : "radius");
   return P;
 }
 

@@ -230,11 +230,20 @@ struct GjkResult {
     }
     const SupportPoint w = minkowski_support(A, B, -v);
     if (vv - v.dot(w.w) <= 1e-13 * vv) break;
+    // GJK stalls below (a repeated vertex, or rounding that stops |v| decreasing). That ends it
+    // with a distance only if v separates: the support along -v lies on the far side of the
+    // origin. Otherwise the origin is inside, or on the boundary within rounding (a flat simplex,
+    // e.g. boxes with coinciding faces and centres): overlap, and EPA finds the depth.
+    const bool separating = v.dot(w.w) > 0.0;
     // A repeated vertex means no progress is possible.
     bool repeated = false;
     for (int i = 0; i < s.n; ++i)
       if (s.w(i) == w.w) repeated = true;
-    if (repeated) break;
+    if (repeated) {
+      r.overlap = !separating;
+      if (r.overlap) return r;
+      break;
+    }
     Simplex trial = s;
     trial.v[static_cast<std::size_t>(trial.n++)] = w;
     if (reduce_simplex(trial)) {
@@ -244,7 +253,11 @@ struct GjkResult {
     }
     const Vec3 nv = trial.point();
     const double nvv = nv.squaredNorm();
-    if (nvv >= vv) break;  // rounding: the previous simplex is as good as it gets
+    if (nvv >= vv) {  // rounding: the previous simplex is as good as it gets
+      r.overlap = !separating;
+      if (r.overlap) return r;
+      break;
+    }
     s = trial;
     v = nv;
     vv = nvv;
