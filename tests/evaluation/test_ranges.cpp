@@ -127,3 +127,22 @@ TEST_CASE("the shake and gravity tests bound their counts and angles", "[evaluat
   // The scene was not stepped by any refused call.
   CHECK(scene.world().steps() == 0);
 }
+
+TEST_CASE("an object the World cannot represent is refused naming the object",
+          "[evaluation][input]") {
+  const Eigen::Isometry3d hand = test::sdh_side_pose();
+  Vec<7> q;
+  q << 0.0, -0.6, 0.3, -0.6, 0.3, -0.6, 0.3;
+  ObjectSpec o = cylinder_object(hand, {0, 0, 0.15}, Eigen::Vector3d::UnitY(), 0.035, 0.1, 0.5);
+  o.mass = 1e306;  // its kinetic energy at max_speed overflows
+  test::check_throws_naming([&] { HandScene<models::schunk_sdh> s(hand, q, o); }, "object.mass");
+  try {
+    HandScene<models::schunk_sdh> s(hand, q, o);
+  } catch (const invalid_argument& e) {
+    CHECK_THAT(e.what(), Catch::Contains("not representable") && Catch::Contains("1e+306"));
+  }
+  o.mass = 0.5;
+  o.shapes[0].size[0] = 1e200;  // a cylinder radius beyond the length range
+  test::check_throws_naming([&] { HandScene<models::schunk_sdh> s(hand, q, o); },
+                            "object.shapes[0].size[0]");
+}

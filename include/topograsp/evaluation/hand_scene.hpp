@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <topograsp/kinematics/data.hpp>
@@ -47,7 +48,8 @@ class HandScene {
 
   /// Builds the scene: the hand frame at \p hand_pose with joints at \p q (also the targets), and
   /// the object. Throws topograsp::invalid_argument naming the argument for a non-finite or
-  /// wrongly sized q, a bad pose (as set_hand_pose()), an object the World refuses (its ranges), an
+  /// wrongly sized q, a bad pose (as set_hand_pose()), an object the World refuses (its ranges;
+  /// named as the object's field, e.g. "object.mass", "object.shapes[0].size[0]"), an
   /// object without shapes, a bad shape, a non-positive mass (or density when the mass is 0), or
   /// bad options.
   HandScene(const Eigen::Isometry3d& hand_pose, const Config& q, const ObjectSpec& object,
@@ -86,7 +88,16 @@ class HandScene {
     o.mass = object.mass;
     o.density = object.density;
     o.friction = options.friction;
-    object_ = world_.add_body(o);
+    try {
+      object_ = world_.add_body(o);
+    } catch (const invalid_argument& e) {
+      // Name this constructor's argument ("object.mass"), not the World's ("desc.mass").
+      const std::string_view m = e.what();
+      const std::size_t colon = m.find(": ");
+      if (m.rfind("desc.", 0) != 0 || colon == std::string_view::npos) throw;
+      detail::throw_invalid_argument("object." + std::string(m.substr(5, colon - 5)),
+                                     m.substr(colon + 2));
+    }
   }
 
   /// Sets the joint targets (dim nq, rad or m) that the next step() drives the links to.
