@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <string>
 #include <topograsp/aico.hpp>
@@ -192,6 +193,46 @@ TEST_CASE("bad input throws invalid_argument naming the argument", "[aico][input
   o = {};
   o.damping = -1.0;
   test::check_throws_naming([&] { Problem p(stack, q0, o); }, "options.damping");
+  // Finite but out of the documented ranges: INT_MAX steps overflowed steps + 1.
+  o = {};
+  o.steps = std::numeric_limits<int>::max();
+  test::check_throws_naming([&] { Problem p(stack, q0, o); }, "options.steps");
+  o.steps = k_max_aico_steps + 1;
+  test::check_throws_naming([&] { Problem p(stack, q0, o); }, "options.steps");
+  {
+    AicoWorkspace<arm, ArmReach> ws;
+    test::check_throws_naming([&] { ws.resize(std::numeric_limits<int>::max()); }, "steps");
+    test::check_throws_naming([&] { ws.resize(0); }, "steps");
+  }
+  o = {};
+  o.duration = 1e300;
+  test::check_throws_naming([&] { Problem p(stack, q0, o); }, "options.duration");
+  o = {};
+  o.duration = 1e-300;
+  test::check_throws_naming([&] { Problem p(stack, q0, o); }, "options.duration");
+  o = {};
+  o.control_precision = 1e300;
+  test::check_throws_naming([&] { Problem p(stack, q0, o); }, "options.control_precision");
+  o = {};
+  o.process_noise = 1e300;
+  test::check_throws_naming([&] { Problem p(stack, q0, o); }, "options.process_noise");
+  o = {};
+  o.terminal_precision = 1e300;
+  test::check_throws_naming([&] { Problem p(stack, q0, o); }, "options.terminal_precision");
+  o = {};
+  o.damping_increase = 1e300;
+  test::check_throws_naming([&] { Problem p(stack, q0, o); }, "options.damping_increase");
+  o = {};
+  o.local_iterations = std::numeric_limits<int>::max();
+  test::check_throws_naming([&] { Problem p(stack, q0, o); }, "options.local_iterations");
+  o = {};
+  o.max_sweeps = std::numeric_limits<int>::max();
+  test::check_throws_naming([&] { Problem p(stack, q0, o); }, "options.max_sweeps");
+  // The bounds themselves are accepted (checked, not solved: k_max_aico_steps is large).
+  o = {};
+  o.steps = k_max_aico_steps;
+  o.duration = 1e6;
+  CHECK_NOTHROW(Problem(stack, q0, o));
   // A warm start of the wrong length or with a NaN.
   o = {};
   o.steps = 10;

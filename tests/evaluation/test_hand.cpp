@@ -158,7 +158,7 @@ TEST_CASE("bad input to the scene and the tests throws naming the argument",
         o.shapes[0].size[0] = 0.0;
         HandScene<models::schunk_sdh> s(hand, q, o);
       },
-      "desc.shapes[0].size[0]");
+      "object.shapes[0].size[0]");
   test::check_throws_naming(
       [&] {
         ObjectSpec o = good;
@@ -172,7 +172,7 @@ TEST_CASE("bad input to the scene and the tests throws naming the argument",
         o.pose.p[1] = std::nan("");
         HandScene<models::schunk_sdh> s(hand, q, o);
       },
-      "desc.pose");
+      "object.pose");
   test::check_throws_naming(
       [&] {
         Vec<7> bad = q;

@@ -203,3 +203,83 @@ TEST_CASE("winding rejects bad input naming the argument", "[task][winding]") {
   CHECK_THROWS_AS(topograsp::winding_gradient(bad, Vec3::Zero(), std::span<Vec3>(g).first(2)),
                   invalid_argument);
 }
+
+TEST_CASE("winding and its gradient are scale-invariant over the whole finite range",
+          "[task][winding]") {
+  // A unit square around p (closed), tilted so that no coordinate is zero, and an axis-aligned
+  // one: at 1e200 the axis-aligned square's gradient used to be NaN and the tilted one's value
+  // NaN; at 1e-170 and 1e-300 the value used to be 0.
+  const Vec3 p(0.1, -0.2, 0.05);
+  const std::vector<Vec3> axis{Vec3(1, 1, 0), Vec3(-1, 1, 0), Vec3(-1, -1, 0), Vec3(1, -1, 0),
+                               Vec3(1, 1, 0)};
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(0.7, Vec3(1.0, 2.0, -0.5).normalized()).toRotationMatrix();
+  std::vector<Vec3> tilted;
+  for (const Vec3& x : axis) tilted.push_back(R * (x + Vec3(0.2, -0.1, 0.0)));
+  for (const std::vector<Vec3>* curve : {&axis, static_cast<const std::vector<Vec3>*>(&tilted)}) {
+    std::vector<Vec3> g0(curve->size());
+    const double w0 = topograsp::winding_gradient(*curve, Vec3::Zero(), g0);
+    CHECK(w0 == Approx(1.0).margin(1e-12));
+    for (const double scale :
+         {1e-300, 1e-250,   1e-200,   1e-170,   1e-150,  1e-100,  1e-50,  1e-10,
+          0.3,    1e10,     1e50,     1e100,    1e150,   1e170,   1e200,  1e250,
+          1e300,  0x1p-251, 0x1p-250, 0x1p-249, 0x1p249, 0x1p250, 0x1p251}) {
+      CAPTURE(scale);
+      std::vector<Vec3> x;
+      for (const Vec3& v : *curve) x.push_back(scale * v);
+      std::vector<Vec3> g(x.size());
+      const double w = topograsp::winding_gradient(x, Vec3::Zero(), g);
+      REQUIRE(std::isfinite(w));
+      CHECK(w == Approx(w0).margin(1e-13));
+      CHECK(winding(x, Vec3::Zero()) == Approx(w0).margin(1e-13));
+      for (std::size_t i = 0; i < x.size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+          REQUIRE(std::isfinite(g[i][k]));
+          // d w / d x scales as 1 / scale.
+          CHECK(g[i][k] * scale == Approx(g0[i][k]).margin(1e-12));
+        }
+    }
+    // Not scaled about the origin: p inside the square too.
+    for (const double scale : {1e-300, 1e-170, 1e170, 1e300}) {
+      std::vector<Vec3> x;
+      for (const Vec3& v : *curve) x.push_back(scale * (v + p));
+      CHECK(winding(x, scale * p) == Approx(w0).margin(1e-12));
+    }
+  }
+}
+
+TEST_CASE("winding is unchanged by a translation far from the origin", "[task][winding]") {
+  // Power-of-two offsets keep X_i - p exact, so the value must not move at all beyond rounding.
+  const std::vector<Vec3> square{Vec3(1, 1, 0.25), Vec3(-1, 1, 0.25), Vec3(-1, -1, -0.25),
+                                 Vec3(1, -1, 0.25), Vec3(1, 1, 0.25)};
+  const Vec3 p(0.125, 0.25, 0.0);
+  const double w0 = winding(square, p);
+  for (const double scale : {1e-250, 1.0, 1e250})
+    for (const double offset : {0x1p20, 0x1p40}) {
+      CAPTURE(scale, offset);
+      const Vec3 t = Vec3(offset, -offset, 0.5 * offset) * scale;
+      std::vector<Vec3> x;
+      for (const Vec3& v : square) x.push_back(scale * v + t);
+      std::vector<Vec3> g(x.size());
+      const double w = topograsp::winding_gradient(x, scale * p + t, g);
+      CHECK(w == Approx(w0).margin(1e-12));
+      for (const Vec3& gi : g) CHECK(gi.allFinite());
+    }
+  // The largest coordinates: the square of size 2^1000 around 2^1020.
+  std::vector<Vec3> x;
+  for (const Vec3& v : square) x.push_back(0x1p1000 * v + Vec3::Constant(0x1p1020));
+  CHECK(winding(x, 0x1p1000 * p + Vec3::Constant(0x1p1020)) == Approx(w0).margin(1e-12));
+}
+
+TEST_CASE("winding refuses points whose offset from p overflows", "[task][winding]") {
+  const double big = std::numeric_limits<double>::max();
+  const std::vector<Vec3> x{Vec3(big, 0, 0), Vec3(0, big, 0)};
+  CHECK_THROWS_WITH(winding(x, Vec3(-big, 0, 0)),
+                    Catch::StartsWith("points") && Catch::Contains("point 0 minus p overflows"));
+  // Subnormal offsets count as a vertex at p: finite, zero.
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  const std::vector<Vec3> t{Vec3(tiny, 0, 0), Vec3(0, tiny, 0), Vec3(-tiny, 0, 0)};
+  std::vector<Vec3> g(3);
+  CHECK(topograsp::winding_gradient(t, Vec3::Zero(), g) == 0.0);
+  for (const Vec3& gi : g) CHECK(gi.isZero(0.0));
+}

@@ -49,6 +49,10 @@ enum class SweepMode {
   return "unknown";
 }
 
+/// The largest AicoOptions::steps: 100000 (the workspace holds T + 1 states and messages, so T
+/// must stay far from INT_MAX; a motion of 100000 steps is already beyond any use).
+inline constexpr int k_max_aico_steps = 100000;
+
 /// The parameters of an AICO solve (docs/aico.md, "Parameters"). Every field has a usable default;
 /// AicoProblem's constructor checks them and throws topograsp::invalid_argument naming the first
 /// bad field.
@@ -58,23 +62,25 @@ enum class SweepMode {
 /// whitened task residual of the TaskStack and \f$W^{-1} = Q + B H^{-1} B'\f$ (dynamic mode) or
 /// \f$W = H\f$ (kinematic mode).
 struct AicoOptions {
-  /// Number of time steps T (>= 1); the trajectory has T + 1 states, x_0 being the fixed start.
+  /// Number of time steps T, 1 to k_max_aico_steps; the trajectory has T + 1 states, x_0 being
+  /// the fixed start.
   int steps = 50;
-  /// Duration of the motion in seconds (> 0); the step length is tau = duration / steps.
+  /// Duration of the motion in seconds (1e-6 to 1e6); the step length is tau = duration / steps.
   double duration = 1.0;
-  /// Control precision h, H = h I (> 0). Dynamic mode: a step's control cost is
+  /// Control precision h, H = h I (> 0, at most 1e100). Dynamic mode: a step's control cost is
   /// h |u|^2 with u the joint acceleration (rad/s^2); kinematic mode: h |q_{t+1} - q_t|^2.
   /// Larger values give smoother, shorter motions that reach the task targets less exactly.
   double control_precision = 1.0;
-  /// Process noise rate q (> 0, dynamic mode only): Q = q tau I. B H^-1 B' has rank nq only, so
-  /// Q makes W^-1 invertible; it barely changes the optimum while it stays small.
+  /// Process noise rate q (> 0 and at most 1e100, dynamic mode only): Q = q tau I. B H^-1 B' has
+  /// rank nq only, so Q makes W^-1 invertible; it barely changes the optimum while it stays small.
   double process_noise = 1e-10;
-  /// Initial damping alpha (>= 0): the belief is pulled toward the last accepted trajectory by
-  /// alpha I (Levenberg-Marquardt on the whole trajectory). 0 gives undamped Gauss-Newton sweeps.
+  /// Initial damping alpha (0 to 1e100): the belief is pulled toward the last accepted trajectory
+  /// by alpha I (Levenberg-Marquardt on the whole trajectory). 0 gives undamped Gauss-Newton
+  /// sweeps.
   double damping = 1.0;
-  /// Factor (> 1) by which alpha grows after a rejected sweep.
+  /// Factor (> 1, at most 1e10) by which alpha grows after a rejected sweep.
   double damping_increase = 10.0;
-  /// Divisor (>= 1) by which alpha shrinks after an accepted sweep.
+  /// Divisor (1 to 1e10) by which alpha shrinks after an accepted sweep.
   double damping_decrease = 5.0;
   /// Step tolerance in rad (> 0): a time step is relinearised when its belief moved this far
   /// (infinity norm over q) from its linearisation point, and the solve converges when an
@@ -85,17 +91,17 @@ struct AicoOptions {
   double max_step = 0.5;
   /// Relative cost decrease (>= 0) below which an accepted sweep ends the solve.
   double cost_tolerance = 1e-6;
-  /// Largest number of sweeps (>= 1), accepted or not.
+  /// Largest number of sweeps (1 to 1000000), accepted or not.
   int max_sweeps = 60;
-  /// Number of rejected sweeps in a row (>= 1) after which the solve gives up.
+  /// Number of rejected sweeps in a row (1 to 1000000) after which the solve gives up.
   int max_rejections = 8;
   /// How often each step is relinearised within a pass.
   SweepMode sweep = SweepMode::symmetric;
-  /// Relocations per step and pass in SweepMode::local_gauss_newton (>= 1).
+  /// Relocations per step and pass in SweepMode::local_gauss_newton (1 to 1000).
   int local_iterations = 5;
-  /// Precision (>= 0) of the terminal message V_T^-1: a weak prior at the belief of x_T, refreshed
-  /// every sweep. The message updates of this library never invert V_T^-1, so 0 (no message from
-  /// beyond T, the exact objective above) is the default.
+  /// Precision (0 to 1e100) of the terminal message V_T^-1: a weak prior at the belief of x_T,
+  /// refreshed every sweep. The message updates of this library never invert V_T^-1, so 0 (no
+  /// message from beyond T, the exact objective above) is the default.
   double terminal_precision = 0.0;
 };
 

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include <topograsp/aico/detail/task_parts.hpp>
@@ -58,8 +59,12 @@ struct AicoWorkspace {
   /// A workspace sized for \p problem.
   explicit AicoWorkspace(const Problem& problem) { resize(problem.steps()); }
 
-  /// Sizes every buffer for \p steps time steps (allocates; not needed before solve()).
+  /// Sizes every buffer for \p steps time steps (allocates; not needed before solve()). Throws
+  /// topograsp::invalid_argument naming "steps" unless it is 1 to k_max_aico_steps.
   void resize(int steps) {
+    if (steps < 1 || steps > k_max_aico_steps)
+      detail::throw_invalid_argument("steps", "expected 1 to " + std::to_string(k_max_aico_steps) +
+                                                  ", got " + std::to_string(steps));
     const auto n = static_cast<std::size_t>(steps + 1);
     buffers[0].resize(n);
     buffers[1].resize(n);

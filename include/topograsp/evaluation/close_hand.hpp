@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
 #include <type_traits>
 #include <vector>
 
@@ -16,10 +17,13 @@ namespace topograsp {
 /// The parameters of close_hand().
 struct CloseOptions {
   /// Joint increment per iteration while closing (rad for revolute, m for prismatic joints).
-  /// Default 0.5 degrees.
+  /// At least the model's largest joint range / k_max_close_increments, so that closing takes at
+  /// most that many increments per joint (0.5 degrees gives 720 over a full turn). Default 0.5
+  /// degrees.
   double step = deg(0.5);
   /// Bisections that refine each contact value between two increments (each halves the
-  /// bracket: 8 give 0.002 degrees). Default 8.
+  /// bracket: 8 give 0.002 degrees), in [0, 64] (a double has 53 bits; more change nothing).
+  /// Default 8.
   int bisections = 8;
   /// How far each joint that touched is pushed on past contact (rad or m): the squeeze. With the
   /// default hand stiffness of 2000 N/m, 2.5 degrees at a 0.1 m lever is about 4 mm of overlap,
@@ -28,9 +32,13 @@ struct CloseOptions {
   /// A link touches the object when a contact's separation is at most this (m). Default 0.
   double touch_distance = 0.0;
   /// Physics steps over which the targets ramp from contact to squeezed, with gravity off so the
-  /// object is not dropped before it is held. Default 10.
+  /// object is not dropped before it is held; in [0, 1000000]. Default 10.
   int squeeze_steps = 10;
 };
+
+/// The most increments close_hand() takes per joint: CloseOptions::step must be at least the
+/// largest joint range of the model divided by this.
+inline constexpr double k_max_close_increments = 100000.0;
 
 /// The outcome of close_hand().
 template <int NQ>
@@ -67,8 +75,11 @@ std::array<bool, std::remove_cvref_t<decltype(M)>::n_links> links_after_joint(in
 /// geometric (the object held still at its pose); then the hand is placed at the contact values
 /// and the scene is stepped options.squeeze_steps times, gravity off, while the targets ramp to
 /// the squeezed values. Works for any model; joints with closing 0 (abduction, a free base)
-/// keep their value. Throws topograsp::invalid_argument for non-positive step or negative
-/// squeeze, bisections or squeeze_steps.
+/// keep their value. Throws topograsp::invalid_argument naming the option for a non-positive or
+/// non-finite step, a step below the largest joint range / k_max_close_increments (a finer
+/// search would take longer than any use warrants: 1e-8 rad would be 3e8 increments), a
+/// negative or non-finite squeeze or touch_distance, bisections outside [0, 64] or
+/// squeeze_steps outside [0, 1000000].
 template <const auto& M, class S>
 CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options = {}) {
   constexpr int nq = M.nq;
@@ -76,8 +87,14 @@ CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options
   require_positive(options.step, "options.step");
   require_finite(options.squeeze, "options.squeeze");
   require_finite(options.touch_distance, "options.touch_distance");
-  if (options.squeeze < 0.0 || options.bisections < 0 || options.squeeze_steps < 0)
-    detail::throw_invalid_argument("options", "expected squeeze, bisections, squeeze_steps >= 0");
+  if (options.squeeze < 0.0) detail::throw_invalid_argument("options.squeeze", "expected >= 0");
+  if (options.bisections < 0 || options.bisections > 64)
+    detail::throw_invalid_argument("options.bisections",
+                                   "expected 0 to 64, got " + std::to_string(options.bisections));
+  if (options.squeeze_steps < 0 || options.squeeze_steps > 1000000)
+    detail::throw_invalid_argument(
+        "options.squeeze_steps",
+        "expected 0 to 1000000, got " + std::to_string(options.squeeze_steps));
   const World<S>& world = scene.world();
   const RigidBody<S>& object = world.body(scene.object_body());
   const Eigen::Isometry3d hand = scene.hand_pose();
@@ -124,7 +141,15 @@ CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options
     }
   }
   const double range = (hi - lo).cwiseAbs().maxCoeff();
-  const int max_iterations = static_cast<int>(range / options.step) + 2;
+  const double increments = range / options.step;
+  if (!(increments <= k_max_close_increments)) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf,
+                  "expected at least %.6g (the largest joint range %.6g / %.0f), got %.6g",
+                  range / k_max_close_increments, range, k_max_close_increments, options.step);
+    detail::throw_invalid_argument("options.step", buf);
+  }
+  const int max_iterations = static_cast<int>(increments) + 2;
   for (int it = 0; it < max_iterations; ++it) {
     bool any = false;
     for (int i = 0; i < nq; ++i) {

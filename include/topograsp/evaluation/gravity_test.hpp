@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <string>
 
 #include <topograsp/evaluation/shake_test.hpp>
 
@@ -28,8 +29,9 @@ struct GravityTestResult {
 /// and all numbers are finite. Copies the scene (allocates) once per direction.
 template <const auto& M, class S>
 GravityTestResult gravity_test(const HandScene<M, S>& scene, const ShakeOptions& options = {}) {
-  if (options.shake_steps < 0)
-    detail::throw_invalid_argument("options.shake_steps", "expected >= 0");
+  if (options.shake_steps < 0 || options.shake_steps > k_max_shake_steps)
+    detail::throw_invalid_argument(
+        "options.shake_steps", "expected 0 to 1000000, got " + std::to_string(options.shake_steps));
   require_positive(options.max_translation, "options.max_translation");
   require_positive(options.max_rotation, "options.max_rotation");
   GravityTestResult out;

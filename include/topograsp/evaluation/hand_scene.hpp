@@ -5,8 +5,10 @@
 #pragma once
 
 #include <array>
+#include <cstdio>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <topograsp/kinematics/data.hpp>
@@ -46,13 +48,15 @@ class HandScene {
 
   /// Builds the scene: the hand frame at \p hand_pose with joints at \p q (also the targets), and
   /// the object. Throws topograsp::invalid_argument naming the argument for a non-finite or
-  /// wrongly sized q, a bad pose, an object without shapes, a bad shape, a non-positive mass
-  /// (or density when the mass is 0), or bad options.
+  /// wrongly sized q, a bad pose (as set_hand_pose()), an object the World refuses (its ranges;
+  /// named as the object's field, e.g. "object.mass", "object.shapes[0].size[0]"), an
+  /// object without shapes, a bad shape, a non-positive mass (or density when the mass is 0), or
+  /// bad options.
   HandScene(const Eigen::Isometry3d& hand_pose, const Config& q, const ObjectSpec& object,
             const HandSceneOptions& options = {})
       : world_(options.stepper), options_(options) {
     require_configuration<M>(q, "q");
-    require_finite(hand_pose.matrix(), "hand_pose");
+    require_hand_pose(hand_pose, "hand_pose");
     require_positive(options.friction, "options.friction");
     if (object.shapes.empty())
       detail::throw_invalid_argument("object.shapes", "expected at least one shape");
@@ -84,7 +88,16 @@ class HandScene {
     o.mass = object.mass;
     o.density = object.density;
     o.friction = options.friction;
-    object_ = world_.add_body(o);
+    try {
+      object_ = world_.add_body(o);
+    } catch (const invalid_argument& e) {
+      // Name this constructor's argument ("object.mass"), not the World's ("desc.mass").
+      const std::string_view m = e.what();
+      const std::size_t colon = m.find(": ");
+      if (m.rfind("desc.", 0) != 0 || colon == std::string_view::npos) throw;
+      detail::throw_invalid_argument("object." + std::string(m.substr(5, colon - 5)),
+                                     m.substr(colon + 2));
+    }
   }
 
   /// Sets the joint targets (dim nq, rad or m) that the next step() drives the links to.
@@ -93,9 +106,16 @@ class HandScene {
     require_configuration<M>(q, "q");
     q_ = q;
   }
-  /// Sets the hand frame pose that the next step() drives the hand to.
+  /// The largest coordinate (m) of a hand pose: 1e6 m. Far beyond any workspace, and small
+  /// enough that every link pose (the hand pose times a link's offset) stays within the World's
+  /// max_length() for both double and float.
+  static constexpr double k_max_hand_coordinate = 1e6;
+
+  /// Sets the hand frame pose that the next step() drives the hand to. Throws
+  /// topograsp::invalid_argument naming "pose" for a non-finite pose, a linear part that is not a
+  /// rotation, or a coordinate above k_max_hand_coordinate.
   void set_hand_pose(const Eigen::Isometry3d& pose) {
-    require_finite(pose.matrix(), "pose");
+    require_hand_pose(pose, "pose");
     hand_pose_ = pose;
   }
   /// Puts the hand at \p pose with joints \p q at once (no motion, no contact impulses), and makes
@@ -109,11 +129,19 @@ class HandScene {
   }
 
   /// Drives the links to the targets and advances the world by one step; allocates nothing.
-  /// Returns the World's status (Status::numerical_issue ends the run).
+  /// Returns the World's status (Status::numerical_issue ends the run). If a link pose at the
+  /// targets is not one the World accepts (World::target_in_range(): non-finite, or beyond
+  /// World::max_length(), e.g. a prismatic joint target of 1e300 m), nothing moves and the step
+  /// returns Status::invalid_input; the scene stays usable with other targets.
   Status step() noexcept {
     forward_kinematics(kin_, q_);
+    std::array<Eigen::Isometry3d, ModelType::n_links> poses;
+    for (std::size_t l = 0; l < ModelType::n_links; ++l) {
+      poses[l] = link_pose(static_cast<int>(l));
+      if (link_body_[l] >= 0 && !World<S>::target_in_range(poses[l])) return Status::invalid_input;
+    }
     for (std::size_t l = 0; l < ModelType::n_links; ++l)
-      if (link_body_[l] >= 0) world_.set_target(link_body_[l], link_pose(static_cast<int>(l)));
+      if (link_body_[l] >= 0) world_.set_target(link_body_[l], poses[l]);
     return world_.step();
   }
 
@@ -165,6 +193,20 @@ class HandScene {
   [[nodiscard]] const KinematicsData<M>& kinematics() const noexcept { return kin_; }
 
  private:
+  static void require_hand_pose(const Eigen::Isometry3d& pose, std::string_view argument) {
+    require_finite(pose.matrix(), argument);
+    const Mat3 R = pose.linear();
+    if (!(R.transpose() * R).isApprox(Mat3::Identity(), 1e-6) || R.determinant() < 0.0)
+      detail::throw_invalid_argument(argument, "expected a rotation (orthonormal, det +1)");
+    const double m = pose.translation().cwiseAbs().maxCoeff();
+    if (!(m <= k_max_hand_coordinate)) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.6g", m);
+      detail::throw_invalid_argument(
+          argument, std::string("expected coordinates of at most 1e6 m, got ") + buf + " m");
+    }
+  }
+
   World<S> world_;
   HandSceneOptions options_;
   KinematicsData<M> kin_;

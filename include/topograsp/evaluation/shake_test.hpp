@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <string_view>
 
 #include <topograsp/core/constants.hpp>
@@ -20,6 +21,10 @@ enum class ShakePivot : std::uint8_t {
   palm,    ///< the model's palm centre (the root link's origin for a model without a hand)
   object,  ///< the object's centre of mass at the start of the shake
 };
+
+/// The most settle or shake steps (and shakes) shake_test() and gravity_test() accept: 1e6 steps,
+/// 4.6 hours simulated at 60 Hz, far beyond any test, and their sum far from INT_MAX.
+inline constexpr int k_max_shake_steps = 1000000;
 
 /// The parameters of shake_test() and gravity_test(); defaults as in docs/evaluation.md.
 struct ShakeOptions {
@@ -70,6 +75,24 @@ inline void object_motion(const Eigen::Isometry3d& reference, const Eigen::Isome
   rotation = rotation_angle<double>(Mat3(reference.linear().transpose() * now.linear()));
 }
 
+inline void require_shake_options(const ShakeOptions& options) {
+  if (options.settle_steps < 0 || options.settle_steps > k_max_shake_steps)
+    throw_invalid_argument("options.settle_steps",
+                           "expected 0 to 1000000, got " + std::to_string(options.settle_steps));
+  if (options.shake_steps < 0 || options.shake_steps > k_max_shake_steps)
+    throw_invalid_argument("options.shake_steps",
+                           "expected 0 to 1000000, got " + std::to_string(options.shake_steps));
+  if (options.shakes < 1 || options.shakes > k_max_shake_steps)
+    throw_invalid_argument("options.shakes",
+                           "expected 1 to 1000000, got " + std::to_string(options.shakes));
+  require_finite(options.min_angle, "options.min_angle");
+  require_finite(options.max_angle, "options.max_angle");
+  if (std::abs(options.min_angle) > two_pi)
+    throw_invalid_argument("options.min_angle", "expected at most a full turn (2 pi rad)");
+  if (std::abs(options.max_angle) > two_pi)
+    throw_invalid_argument("options.max_angle", "expected at most a full turn (2 pi rad)");
+}
+
 template <class Result>
 void judge(Result& r, int contacts, double translation, double rotation,
            const ShakeOptions& o) noexcept {
@@ -98,15 +121,12 @@ void judge(Result& r, int contacts, double translation, double rotation,
 /// back, amplitude in [min_angle, max_angle]; (3) stable iff the status is success, the object
 /// still touches the hand, every number is finite, and the object moved less than
 /// max_translation and turned less than max_rotation in the hand frame. Allocates nothing.
-/// Throws topograsp::invalid_argument for negative step counts, fewer than 1 shake, or
-/// non-finite or negative thresholds and angles.
+/// Throws topograsp::invalid_argument for step counts outside [0, k_max_shake_steps], shakes
+/// outside [1, k_max_shake_steps], angles that are not finite or beyond a full turn (2 pi), or
+/// non-finite or non-positive thresholds.
 template <const auto& M, class S>
 ShakeResult shake_test(HandScene<M, S>& scene, const ShakeOptions& options = {}) {
-  if (options.settle_steps < 0 || options.shake_steps < 0 || options.shakes < 1)
-    detail::throw_invalid_argument("options",
-                                   "expected settle_steps, shake_steps >= 0 and shakes >= 1");
-  require_finite(options.min_angle, "options.min_angle");
-  require_finite(options.max_angle, "options.max_angle");
+  detail::require_shake_options(options);
   if (options.max_angle < options.min_angle)
     detail::throw_invalid_argument("options.max_angle", "expected >= options.min_angle");
   require_positive(options.max_translation, "options.max_translation");

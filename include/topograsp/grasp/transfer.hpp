@@ -8,6 +8,7 @@
 /// judged by the shake test, the hand without the arm.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -218,8 +219,10 @@ inline void validate_transfer_parameters(const TransferOptions& options) {
 /// A transferred grasp: where the SDH ended (object frame), how it was planned, the shake test.
 struct RobotGrasp {
   TransferMethod method = TransferMethod::topological;
-  bool planned = false;  ///< the method produced a hand pose (else not simulated)
-  std::string reason;    ///< why not planned, or the planner's termination
+  /// The method produced a hand pose of its own (else nothing was simulated and reason says
+  /// why); a method that could not do its work is never reported with another method's pose.
+  bool planned = false;
+  std::string reason;  ///< why not planned, or the planner's termination
   Eigen::Isometry3d hand_pose = Eigen::Isometry3d::Identity();  ///< SDH palm, object frame
   Vec<7> q_open = Vec<7>::Zero();                               ///< the SDH's joints before closing
   Vec<7> q_closed = Vec<7>::Zero();                             ///< after closing and squeezing
@@ -311,6 +314,29 @@ inline Vec2 sdh_windings(const Vec3& p, const Eigen::Isometry3d& root, const Vec
 
 }  // namespace detail
 
+namespace detail {
+
+/// Why the human grasp \p g cannot be transferred by any method (a non-finite hand pose,
+/// configuration or descriptor), or empty if it can.
+[[nodiscard]] inline std::string unusable_human_grasp(const HumanGrasp& g) {
+  if (!g.hand_pose.matrix().allFinite()) return "the human hand pose is not finite";
+  if (!g.q.allFinite()) return "the human configuration is not finite";
+  if (!g.descriptor.values.allFinite()) return "the human windings are not finite";
+  return {};
+}
+
+/// Why the SDH cannot be simulated at \p root with joints \p q (a non-finite or far pose, which
+/// HandScene refuses), or empty if it can.
+[[nodiscard]] inline std::string unusable_sdh_pose(const Eigen::Isometry3d& root, const Vec<7>& q) {
+  if (!root.matrix().allFinite() || !q.allFinite()) return "the hand pose is not finite";
+  if (!(root.translation().cwiseAbs().maxCoeff() <=
+        HandScene<models::schunk_sdh>::k_max_hand_coordinate))
+    return "the hand is placed farther than 1e6 m from the object";
+  return {};
+}
+
+}  // namespace detail
+
 /// Closes the SDH at \p root (its palm in the object frame) with joints \p q_open on the object,
 /// squeezes, and runs the shake test; fills the simulation fields of \p r.
 inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3d& root,
@@ -367,6 +393,8 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
   const auto t0 = detail::Clock::now();
   RobotGrasp r;
   r.method = TransferMethod::transplant;
+  r.reason = detail::unusable_human_grasp(g);
+  if (!r.reason.empty()) return r;
   const Eigen::Isometry3d target = detail::sdh_grasp_target(g);
   const auto root = place_at_contact(object, detail::sdh_root_for_grasp_centre(target),
                                      options.sdh_preshape, target.linear().col(2), options.sim);
@@ -375,10 +403,17 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
     r.reason = "the hand cannot be placed clear of the object";
     return r;
   }
+  r.reason = detail::unusable_sdh_pose(*root, options.sdh_preshape);
+  if (!r.reason.empty()) return r;
   r.planned = true;
   simulate_sdh_grasp(object, *root, options.sdh_preshape, options, r);
   return r;
 }
+
+/// The largest distance (m) between a fitted SDH fingertip and its target for which the
+/// fingertip mapping counts as done: 0.5 m, about three times the SDH's finger length (0.17 m).
+/// A larger error means the targets were out of the hand's reach, and the fit failed.
+inline constexpr double k_fingertip_max_error = 0.5;
 
 /// Fingertip mapping (Rohling and Hollerbach 1993): the human's thumb, index and ring fingertips
 /// (the ring, not the middle, because its distance to the index is nearer the SDH's finger
@@ -386,11 +421,21 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
 /// free base fitted by damped least squares, within its joint limits, so that its thumb tip,
 /// finger 1 tip and finger 2 tip lie on them, started from the transplant pose with a weak pull
 /// toward it (options.fingertip_prior); then cleared of the object and closed until contact.
+///
+/// When the fit cannot be done the result is not planned (RobotGrasp::planned false, nothing
+/// simulated) and RobotGrasp::reason says why: a non-finite human grasp, a fit whose cost is not
+/// finite (fingertip targets so far apart that their squared errors overflow, e.g.
+/// fingertip_scale = 1e300), a fit whose fingertips end more than k_fingertip_max_error from
+/// their targets (targets out of the hand's reach, e.g. fingertip_scale = 1e10), or a fitted hand
+/// that HandScene cannot take. It never reports the
+/// transplant pose it starts from as a fingertip transfer.
 [[nodiscard]] inline RobotGrasp transfer_fingertip(const GraspObject& object, const HumanGrasp& g,
                                                    const TransferOptions& options = {}) {
   const auto t0 = detail::Clock::now();
   RobotGrasp r;
   r.method = TransferMethod::fingertip;
+  r.reason = detail::unusable_human_grasp(g);
+  if (!r.reason.empty()) return r;
   constexpr auto& f = models::schunk_sdh_free;
   constexpr auto& h = models::human_hand;
   KinematicsData<h> hd;
@@ -424,6 +469,16 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
   };
   Vec<22> e;
   double cost = residual(q, e);
+  if (!std::isfinite(cost)) {
+    r.plan_ms = detail::ms_since(t0);
+    char buf[128];
+    std::snprintf(buf, sizeof buf,
+                  "the fingertip fit's cost is not finite (fingertip targets out of range, "
+                  "scale %g)",
+                  scale);
+    r.reason = buf;
+    return r;
+  }
   double lambda = 1e-3;
   Mat<22, 13> J = Mat<22, 13>::Zero();
   J.bottomRows<13>() = w * Mat<13, 13>::Identity();
@@ -447,14 +502,36 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
     }
   }
   forward_kinematics(d, q);
+  double tip_error = 0.0;
+  for (std::size_t k = 0; k < 3; ++k)
+    tip_error =
+        std::max(tip_error, (d.frame_p[static_cast<std::size_t>(tips[k])] - goal[k]).norm());
+  if (!(tip_error <= k_fingertip_max_error)) {
+    r.plan_ms = detail::ms_since(t0);
+    char buf[128];
+    std::snprintf(buf, sizeof buf,
+                  "the fingertip fit did not reach the targets (largest tip error %g m, more "
+                  "than %g m)",
+                  tip_error, k_fingertip_max_error);
+    r.reason = buf;
+    return r;
+  }
   const Eigen::Isometry3d fitted = link_pose(d, f.link("palm"));
   const Vec<7> q_hand = q.tail<7>();
+  r.reason = detail::unusable_sdh_pose(fitted, q_hand);
+  if (!r.reason.empty()) {
+    r.plan_ms = detail::ms_since(t0);
+    r.reason = "the fitted " + r.reason.substr(4);  // "the hand ..." -> "the fitted hand ..."
+    return r;
+  }
   const auto root = place_at_contact(object, fitted, q_hand, fitted.linear().col(2), options.sim);
   r.plan_ms = detail::ms_since(t0);
   if (!root) {
     r.reason = "the fitted hand cannot be placed clear of the object";
     return r;
   }
+  r.reason = detail::unusable_sdh_pose(*root, q_hand);
+  if (!r.reason.empty()) return r;
   r.planned = true;
   simulate_sdh_grasp(object, *root, q_hand, options, r);
   return r;
@@ -536,6 +613,8 @@ using TopologicalTaskSet =
   constexpr auto& M = models::schunk_arm_sdh;
   RobotGrasp r;
   r.method = TransferMethod::topological;
+  r.reason = detail::unusable_human_grasp(g);
+  if (!r.reason.empty()) return r;
   Vec<14> q0;
   q0 << options.arm_ready, options.sdh_preshape;
   KinematicsData<M> d;
@@ -566,6 +645,14 @@ using TopologicalTaskSet =
     r.winding_plan.push_back(windings.task.value(d));
     r.winding_targets.push_back(windings.target.at(static_cast<int>(t), problem.steps()));
   }
+  // A plan that ended on non-finite values before accepting any sweep is the start held still:
+  // the method did no work (a NaN target, say); report it, never the ready pose as its result.
+  const bool moved = std::any_of(plan.sweep_log.begin(), plan.sweep_log.end(),
+                                 [](const AicoSweepRecord& s) { return s.accepted; });
+  if (plan.status == Status::numerical_issue && !moved) {
+    r.reason = "the plan failed before any progress (" + r.reason + ")";
+    return r;
+  }
   const Vec<14> qT = plan.q.back();
   forward_kinematics(d, qT);
   const Eigen::Isometry3d root = T_world_object.inverse() * link_pose(d, M.link("palm"));
@@ -574,6 +661,11 @@ using TopologicalTaskSet =
                                         options.final_approach);
   if (!cleared) {
     r.reason = "the planned hand penetrates the object";
+    return r;
+  }
+  const std::string unusable = detail::unusable_sdh_pose(*cleared, q_hand);
+  if (!unusable.empty()) {
+    r.reason = unusable;
     return r;
   }
   r.planned = true;

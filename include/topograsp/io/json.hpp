@@ -4,12 +4,15 @@
 /// tests that check their schema. Objects keep their keys in insertion order.
 #pragma once
 
+#include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <system_error>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -90,8 +93,17 @@ class Json {
     return out;
   }
 
-  /// Parses JSON text. Throws topograsp::invalid_argument naming "json" with the offset of the
-  /// first error.
+  /// The deepest nesting of arrays and objects parse() accepts (it recurses once per level, so
+  /// the limit bounds its stack use; results files nest 5 levels).
+  static constexpr int k_max_depth = 256;
+
+  /// Parses JSON text (RFC 8259, strictly). Throws topograsp::invalid_argument naming "json" with
+  /// the byte offset of the first error, and never another exception (except std::bad_alloc):
+  /// malformed syntax, a number outside JSON's grammar ("01", "1.", ".5", "+1") or above the
+  /// double range (1.8e308; smaller than 4.9e-324 rounds to 0), a string with a raw control
+  /// character, an unknown escape, a \u escape without exactly 4 hex digits or with an unpaired
+  /// surrogate (pairs are decoded; every \u escape becomes UTF-8), or nesting deeper than
+  /// k_max_depth. A repeated key keeps its last value.
   [[nodiscard]] static Json parse(std::string_view text) {
     std::size_t i = 0;
     Json v = parse_value(text, i, 0);
@@ -207,57 +219,157 @@ class Json {
     i += word.size();
     return true;
   }
+  // Exactly four hex digits at t[i..i+4): their value, or fail naming the offset.
+  static unsigned parse_hex4(std::string_view t, std::size_t i) {
+    if (t.size() < 4 || i > t.size() - 4) fail(i, "bad \\u escape (expected 4 hex digits)");
+    unsigned code = 0;
+    for (std::size_t k = i; k < i + 4; ++k) {
+      const char c = t[k];
+      unsigned d = 0;
+      if (c >= '0' && c <= '9')
+        d = static_cast<unsigned>(c - '0');
+      else if (c >= 'a' && c <= 'f')
+        d = static_cast<unsigned>(c - 'a') + 10u;
+      else if (c >= 'A' && c <= 'F')
+        d = static_cast<unsigned>(c - 'A') + 10u;
+      else
+        fail(k, "bad \\u escape (expected 4 hex digits)");
+      code = code * 16u + d;
+    }
+    return code;
+  }
+  // Appends the code point \p cp (<= 0x10FFFF, not a surrogate) as UTF-8.
+  static void append_utf8(std::string& s, unsigned cp) {
+    if (cp < 0x80u) {
+      s += static_cast<char>(cp);
+    } else if (cp < 0x800u) {
+      s += static_cast<char>(0xC0u | (cp >> 6));
+      s += static_cast<char>(0x80u | (cp & 0x3Fu));
+    } else if (cp < 0x10000u) {
+      s += static_cast<char>(0xE0u | (cp >> 12));
+      s += static_cast<char>(0x80u | ((cp >> 6) & 0x3Fu));
+      s += static_cast<char>(0x80u | (cp & 0x3Fu));
+    } else {
+      s += static_cast<char>(0xF0u | (cp >> 18));
+      s += static_cast<char>(0x80u | ((cp >> 12) & 0x3Fu));
+      s += static_cast<char>(0x80u | ((cp >> 6) & 0x3Fu));
+      s += static_cast<char>(0x80u | (cp & 0x3Fu));
+    }
+  }
   static std::string parse_string(std::string_view t, std::size_t& i) {
     if (i >= t.size() || t[i] != '"') fail(i, "expected a string");
     ++i;
     std::string s;
     while (i < t.size() && t[i] != '"') {
-      if (t[i] == '\\') {
-        if (++i >= t.size()) break;
-        switch (t[i]) {
-          case 'n':
-            s += '\n';
-            break;
-          case 't':
-            s += '\t';
-            break;
-          case 'r':
-            s += '\r';
-            break;
-          case 'b':
-            s += '\b';
-            break;
-          case 'f':
-            s += '\f';
-            break;
-          case 'u': {
-            if (i + 4 >= t.size()) fail(i, "bad \\u escape");
-            const unsigned code =
-                static_cast<unsigned>(std::stoul(std::string(t.substr(i + 1, 4)), nullptr, 16));
-            if (code < 0x80)
-              s += static_cast<char>(code);
-            else
-              s += '?';  // only ASCII escapes are produced by the writer
-            i += 4;
-            break;
-          }
-          default:
-            s += t[i];
-        }
-        ++i;
-      } else {
+      if (static_cast<unsigned char>(t[i]) < 0x20)
+        fail(i, "unescaped control character in a string");
+      if (t[i] != '\\') {
         s += t[i++];
+        continue;
       }
+      const std::size_t escape = i;
+      if (++i >= t.size()) break;
+      switch (t[i]) {
+        case '"':
+        case '\\':
+        case '/':
+          s += t[i];
+          break;
+        case 'n':
+          s += '\n';
+          break;
+        case 't':
+          s += '\t';
+          break;
+        case 'r':
+          s += '\r';
+          break;
+        case 'b':
+          s += '\b';
+          break;
+        case 'f':
+          s += '\f';
+          break;
+        case 'u': {
+          unsigned cp = parse_hex4(t, i + 1);
+          i += 4;
+          if (cp >= 0xDC00u && cp <= 0xDFFFu) fail(escape, "lone low surrogate in \\u escape");
+          if (cp >= 0xD800u && cp <= 0xDBFFu) {
+            // A high surrogate must be followed by an escaped low surrogate.
+            if (i + 2 >= t.size() || t[i + 1] != '\\' || t[i + 2] != 'u')
+              fail(escape, "high surrogate in \\u escape without a low surrogate");
+            const unsigned low = parse_hex4(t, i + 3);
+            if (low < 0xDC00u || low > 0xDFFFu)
+              fail(i + 1, "high surrogate in \\u escape without a low surrogate");
+            cp = 0x10000u + ((cp - 0xD800u) << 10) + (low - 0xDC00u);
+            i += 6;
+          }
+          append_utf8(s, cp);
+          break;
+        }
+        default:
+          fail(escape, "bad escape (expected one of \\\" \\\\ \\/ \\b \\f \\n \\r \\t \\u)");
+      }
+      ++i;
     }
     if (i >= t.size()) fail(i, "unterminated string");
     ++i;
     return s;
   }
+  // A number in JSON's grammar: -?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?
+  static Json parse_number(std::string_view t, std::size_t& i) {
+    const std::size_t start = i;
+    auto digits = [&] {
+      const std::size_t from = i;
+      while (i < t.size() && t[i] >= '0' && t[i] <= '9') ++i;
+      return i - from;
+    };
+    if (i < t.size() && t[i] == '-') ++i;
+    const std::size_t int_start = i;
+    const std::size_t n_int = digits();
+    if (n_int == 0) fail(start, "unexpected character");
+    if (n_int > 1 && t[int_start] == '0') fail(start, "bad number (leading zero)");
+    std::size_t n_frac = 0;
+    if (i < t.size() && t[i] == '.') {
+      ++i;
+      n_frac = digits();
+      if (n_frac == 0) fail(start, "bad number (no digit after '.')");
+    }
+    long long exponent = 0;
+    if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+      ++i;
+      bool negative = false;
+      if (i < t.size() && (t[i] == '+' || t[i] == '-')) negative = t[i++] == '-';
+      const std::size_t exp_start = i;
+      if (digits() == 0) fail(start, "bad number (no digit in the exponent)");
+      for (std::size_t k = exp_start; k < i; ++k)  // saturates: only its sign and size matter
+        exponent = std::min(exponent * 10 + (t[k] - '0'), 1000000000LL);
+      if (negative) exponent = -exponent;
+    }
+    double d = 0.0;
+    const auto [end, ec] = std::from_chars(t.data() + start, t.data() + i, d);
+    if (ec == std::errc::result_out_of_range) {
+      // Overflow or total underflow: tell them apart by the decimal order of magnitude.
+      const std::string_view mantissa = t.substr(int_start, n_int + (n_frac > 0 ? n_frac + 1 : 0));
+      long long order = static_cast<long long>(n_int);
+      for (const char c : mantissa) {
+        if (c == '.') continue;
+        if (c != '0') break;
+        --order;
+      }
+      if (order + exponent > 0) fail(start, "number out of the double range (above 1.8e308)");
+      d = t[start] == '-' ? -0.0 : 0.0;  // below 4.9e-324: rounds to zero
+    } else if (ec != std::errc() || end != t.data() + i) {
+      fail(start, "bad number");
+    }
+    return Json(d);
+  }
   static Json parse_value(std::string_view t, std::size_t& i, int depth) {
-    if (depth > 256) fail(i, "nesting too deep");
     skip_space(t, i);
     if (i >= t.size()) fail(i, "unexpected end");
     const char c = t[i];
+    if ((c == '{' || c == '[') && depth >= k_max_depth)
+      fail(i, "nesting deeper than 256 arrays and objects");
     if (c == '{') {
       ++i;
       Json o = object();
@@ -299,21 +411,8 @@ class Json {
     if (consume(t, i, "true")) return Json(true);
     if (consume(t, i, "false")) return Json(false);
     if (consume(t, i, "null")) return Json();
-    const std::size_t start = i;
-    while (i < t.size() && (std::isdigit(static_cast<unsigned char>(t[i])) || t[i] == '-' ||
-                            t[i] == '+' || t[i] == '.' || t[i] == 'e' || t[i] == 'E'))
-      ++i;
-    if (start == i) fail(i, "unexpected character");
-    const std::string number(t.substr(start, i - start));
-    std::size_t used = 0;
-    double d = 0.0;
-    try {
-      d = std::stod(number, &used);
-    } catch (const std::exception&) {
-      fail(start, "bad number");
-    }
-    if (used != number.size()) fail(start, "bad number");
-    return Json(d);
+    if (c == '-' || (c >= '0' && c <= '9')) return parse_number(t, i);
+    fail(i, "unexpected character");
   }
 
   std::variant<std::nullptr_t, bool, double, std::string, Array, Object> v_{nullptr};

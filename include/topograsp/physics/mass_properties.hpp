@@ -3,8 +3,12 @@
 /// Mass, centre of mass and inertia of shapes and of composite bodies made of shapes.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <span>
 #include <string>
+#include <vector>
 
 #include <topograsp/core/constants.hpp>
 #include <topograsp/core/error.hpp>
@@ -107,9 +111,12 @@ template <class S = double>
 
 /// The mass properties of a body made of \p shapes (all in the body frame). Give either a
 /// \p density (kg/m^3, \p mass <= 0) or a total \p mass (kg, then density only sets the ratio
-/// between shapes and any positive value gives the same result). Overlapping shapes count twice.
-/// Throws topograsp::invalid_argument for an empty shape list, a bad shape, or when neither a
-/// positive finite mass nor a positive finite density is given.
+/// between shapes and any positive value gives the same result; for shapes so large or small
+/// that density 1 overflows, the computation is done at a size scaled by a power of two).
+/// Overlapping shapes count twice. The result may still be out of the range of S (a density of
+/// water on a 1e120 m sphere); the World checks it (World::add_body()). Throws
+/// topograsp::invalid_argument for an empty shape list, a bad shape, or when neither a positive
+/// finite mass nor a positive finite density is given.
 template <class S = double>
 [[nodiscard]] MassProperties<S> body_mass_properties(std::span<const ShapeSpec> shapes, double mass,
                                                      double density) {
@@ -126,24 +133,57 @@ template <class S = double>
   } else {
     require_positive(mass, "mass");
   }
-  MassProperties<S> total;
-  V3<S> moment = V3<S>::Zero();
-  for (const ShapeSpec& s : shapes) {
-    const MassProperties<S> p = shape_mass_properties<S>(s, density);
-    total.mass += p.mass;
-    moment += p.mass * p.com;
-  }
-  total.com = moment / total.mass;
-  for (const ShapeSpec& s : shapes) {
-    const MassProperties<S> p = shape_mass_properties<S>(s, density);
-    const V3<S> d = p.com - total.com;
-    // Parallel-axis theorem: I_c + m (|d|^2 1 - d d^T).
-    total.inertia += p.inertia + p.mass * (d.squaredNorm() * M3<S>::Identity() - d * d.transpose());
+  const auto sum = [](std::span<const ShapeSpec> parts, double rho) {
+    MassProperties<S> t;
+    V3<S> moment = V3<S>::Zero();
+    for (const ShapeSpec& s : parts) {
+      const MassProperties<S> p = shape_mass_properties<S>(s, rho);
+      t.mass += p.mass;
+      moment += p.mass * p.com;
+    }
+    t.com = moment / t.mass;
+    for (const ShapeSpec& s : parts) {
+      const MassProperties<S> p = shape_mass_properties<S>(s, rho);
+      const V3<S> d = p.com - t.com;
+      // Parallel-axis theorem: I_c + m (|d|^2 1 - d d^T).
+      t.inertia += p.inertia + p.mass * (d.squaredNorm() * M3<S>::Identity() - d * d.transpose());
+    }
+    return t;
+  };
+  MassProperties<S> total = sum(shapes, density);
+  const bool representable = std::isfinite(total.mass) &&
+                             total.mass >= std::numeric_limits<S>::min() && total.com.allFinite() &&
+                             total.inertia.allFinite();
+  if (mass > 0.0 && !representable) {
+    // With a given mass only the ratios matter. For shapes so large or small that their volumes
+    // leave the range of S, compute at a size scaled by the exact power of two 2^-e (e the
+    // exponent of the largest size or offset), then scale back: the centre of mass by 2^e, the
+    // inertia per unit mass by 2^(2e).
+    double largest = 0.0;
+    for (const ShapeSpec& s : shapes) {
+      for (const double v : s.size) largest = std::max(largest, std::abs(v));
+      for (const double v : s.pose.p) largest = std::max(largest, std::abs(v));
+    }
+    int e = 0;
+    (void)std::frexp(largest, &e);
+    std::vector<ShapeSpec> scaled(shapes.begin(), shapes.end());
+    for (ShapeSpec& s : scaled) {
+      for (double& v : s.size) v = std::ldexp(v, -e);
+      for (double& v : s.pose.p) v = std::ldexp(v, -e);
+    }
+    const MassProperties<S> t = sum(scaled, 1.0);
+    total.mass = S(1);
+    for (int k = 0; k < 3; ++k) total.com[k] = std::ldexp(t.com[k], e);
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) total.inertia(r, c) = std::ldexp(t.inertia(r, c) / t.mass, 2 * e);
   }
   if (mass > 0.0) {
     const S scale = static_cast<S>(mass) / total.mass;
+    if (std::isfinite(scale) && scale >= std::numeric_limits<S>::min())
+      total.inertia *= scale;
+    else  // the ratio leaves the range (a 1e300 kg body of 1 mm): per unit mass first
+      total.inertia = M3<S>(total.inertia / total.mass) * static_cast<S>(mass);
     total.mass = static_cast<S>(mass);
-    total.inertia *= scale;
   }
   return total;
 }

@@ -4,7 +4,10 @@
 /// soft-step solver with warm starting, circular friction cones and torsional friction.
 #pragma once
 
+#include <array>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -52,8 +55,15 @@ struct Collider {
 ///     (semi-implicit Euler; rotations by the exact exponential), relax contacts without bias
 ///     (the "soft step" of Box2D v3; the contact stages are the free functions of
 ///     physics/contact_solver.hpp, which step() calls in this order);
-///  4. kinematic bodies are placed exactly at their targets; a non-finite state or a speed above
-///     StepperOptions::max_speed undoes the step and ends the run with Status::numerical_issue.
+///  4. kinematic bodies are placed exactly at their targets; a non-finite state, a speed above
+///     StepperOptions::max_speed or a position beyond max_length() of any dynamic body undoes the
+///     step and ends the run with Status::numerical_issue, in the step where it happens.
+///
+/// Ranges: what add_body(), set_pose(), set_target(), set_velocity() and the options accept is
+/// what S represents with margin (sizes and coordinates within [min_length(), max_length()],
+/// masses and inertias whose kinetic energy at max_speed stays finite, a time step short enough
+/// for the speculative contacts); anything else is refused with topograsp::invalid_argument, so
+/// an accepted scene never turns a derived quantity (inertia, kinetic energy) into inf or NaN.
 ///
 /// Limits: no restitution, no joints between dynamic bodies, no gyroscopic torque (bodies spin
 /// about a fixed axis in the absence of contacts), no sleeping, no broad phase beyond
@@ -64,13 +74,31 @@ class World {
   using V3 = detail::V3<S>;
   using M3 = detail::M3<S>;
 
-  /// An empty world. Throws topograsp::invalid_argument if an option is out of range (a
-  /// non-positive time step, fewer than 1 sub-step, a negative stiffness, a non-finite value).
+  /// The largest magnitude (m) of a shape size, a coordinate of a pose, a body position, and of
+  /// StepperOptions::max_speed (m/s): sqrt(largest S) / 1024, 1.3e151 for double and 1.8e16 for
+  /// float, so that squared distances and speeds (and sums of a few of them) stay finite in S.
+  [[nodiscard]] static S max_length() noexcept {
+    return std::sqrt(std::numeric_limits<S>::max()) / S(1024);
+  }
+  /// The smallest shape size (m): sqrt(smallest normal S) * 1024, 1.5e-151 for double and 1.1e-16
+  /// for float, so that squared sizes stay normal numbers in S.
+  [[nodiscard]] static S min_length() noexcept {
+    return std::sqrt(std::numeric_limits<S>::min()) * S(1024);
+  }
+
+  /// An empty world. Throws topograsp::invalid_argument naming the option if one is out of range:
+  /// a non-positive time step, fewer than 1 or more than 1000 sub-steps, a negative stiffness, a
+  /// non-finite value, a max_speed above max_length(), or a time step too long for the speculative
+  /// contacts to catch a body under gravity: |gravity| * time_step^2 must not exceed
+  /// speculative_distance (a body released at rest moves g dt^2 in its first step, semi-implicit
+  /// Euler; a longer step lets it pass into or through a surface before any contact exists: with dt
+  /// = 1 s a box falls 9.8 m in one step, through a 1 m thick ground). The defaults give 9.81 /
+  /// 60^2 = 2.7 mm <= 5 mm.
   explicit World(const StepperOptions& options = {}) : options_(options) {
     require_positive(options.time_step, "options.time_step");
-    if (options.substeps < 1)
+    if (options.substeps < 1 || options.substeps > 1000)
       detail::throw_invalid_argument("options.substeps",
-                                     "expected >= 1, got " + std::to_string(options.substeps));
+                                     "expected 1 to 1000, got " + std::to_string(options.substeps));
     for (std::size_t k = 0; k < 3; ++k) require_finite(options.gravity[k], "options.gravity");
     require_positive(options.contact_hertz, "options.contact_hertz");
     require_non_negative(options.contact_damping_ratio, "options.contact_damping_ratio");
@@ -81,22 +109,40 @@ class World {
     require_non_negative(options.torsional_friction_radius, "options.torsional_friction_radius");
     require_non_negative(options.speculative_distance, "options.speculative_distance");
     require_positive(options.max_speed, "options.max_speed");
+    if (!(static_cast<S>(options.max_speed) <= max_length()))
+      detail::throw_invalid_argument("options.max_speed",
+                                     "expected at most " + number(max_length()) +
+                                         " m/s (its square must stay finite), got " +
+                                         number(options.max_speed));
     require_non_negative(options.linear_damping, "options.linear_damping");
     require_non_negative(options.angular_damping, "options.angular_damping");
-    gravity_ = V3(static_cast<S>(options.gravity[0]), static_cast<S>(options.gravity[1]),
-                  static_cast<S>(options.gravity[2]));
+    const Eigen::Vector3d g(options.gravity[0], options.gravity[1], options.gravity[2]);
+    require_step_catches_fall(g, "options.time_step");
+    gravity_ = g.template cast<S>();
   }
 
   /// Adds a body and returns its index. Allocates (the body, its shapes and the contact slots of
   /// every pair it can form). Throws topograsp::invalid_argument naming the argument for no
-  /// shapes, a non-positive or non-finite size, mass, density or friction, or a non-finite pose.
+  /// shapes, a non-positive or non-finite size, mass, density or friction, or a non-finite pose;
+  /// and for what S cannot represent: a shape size outside [min_length(), max_length()], a pose
+  /// coordinate (of the body or of a shape) above max_length(), friction above 1e6, and for a
+  /// dynamic body a mass or inertia (given, or derived from the density) that is not a normal
+  /// positive number of S with a finite inverse, or whose kinetic energy at
+  /// StepperOptions::max_speed would overflow (mass * max_speed^2, inertia * max_speed^2).
   int add_body(const BodyDesc& desc) {
     if (desc.shapes.empty())
       detail::throw_invalid_argument("desc.shapes", "expected at least one shape");
-    for (std::size_t i = 0; i < desc.shapes.size(); ++i)
-      require_valid_shape(desc.shapes[i], "desc.shapes[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < desc.shapes.size(); ++i) {
+      const std::string name = "desc.shapes[" + std::to_string(i) + "]";
+      require_valid_shape(desc.shapes[i], name);
+      require_representable_shape(desc.shapes[i], name);
+    }
     require_pose(desc.pose, "desc.pose");
+    require_coordinates(desc.pose.p, "desc.pose");
     require_non_negative(desc.friction, "desc.friction");
+    if (desc.friction > 1e6)
+      detail::throw_invalid_argument("desc.friction",
+                                     "expected at most 1e6, got " + number(desc.friction));
     RigidBody<S> b;
     b.type = desc.type;
     b.friction = static_cast<S>(desc.friction);
@@ -110,8 +156,9 @@ class World {
       b.inv_mass = S(1) / mp.mass;
       b.local_com = mp.com;
       b.inertia = mp.inertia;
-      b.inv_inertia_local = mp.inertia.inverse();
+      b.inv_inertia_local = inverse_in_range(mp.inertia);
       b.inv_inertia = b.R * b.inv_inertia_local * b.R.transpose();
+      require_representable_mass(b, desc.mass > 0.0 ? "desc.mass" : "desc.density");
     }
     b.x = p0 + b.R * b.local_com;
     b.first_collider = static_cast<int>(colliders_.size());
@@ -171,23 +218,34 @@ class World {
 
   /// Sets the pose that kinematic body \p body reaches at the end of the next step (its body
   /// frame in the world); the step gives it the constant velocity that gets it there.
-  /// Throws topograsp::invalid_argument for a bad index, a non-kinematic body or a non-finite pose.
+  /// Throws topograsp::invalid_argument for a bad index, a non-kinematic body, a non-finite pose
+  /// or a coordinate above max_length() (target_in_range() tells without throwing).
   void set_target(int body, const Eigen::Isometry3d& pose) {
     require_body(body, "body");
     if (bodies_[static_cast<std::size_t>(body)].type != BodyType::kinematic)
       detail::throw_invalid_argument("body", "expected a kinematic body");
     require_finite(pose.matrix(), "pose");
+    require_coordinates(pose.translation(), "pose");
     Target& t = targets_[static_cast<std::size_t>(body)];
     t.R = orthonormalized(pose.linear().template cast<S>());
     t.p = pose.translation().template cast<S>();
     t.active = true;
   }
 
+  /// True if \p pose is finite with every coordinate at most max_length(): what set_target() and
+  /// set_pose() accept as a pose.
+  [[nodiscard]] static bool target_in_range(const Eigen::Isometry3d& pose) noexcept {
+    return pose.matrix().allFinite() &&
+           pose.translation().cwiseAbs().maxCoeff() <= static_cast<double>(max_length());
+  }
+
   /// Moves body \p body to \p pose (its body frame in the world) at once, without velocity.
-  /// Throws topograsp::invalid_argument for a bad index or a non-finite pose.
+  /// Throws topograsp::invalid_argument for a bad index, a non-finite pose or a coordinate above
+  /// max_length().
   void set_pose(int body, const Eigen::Isometry3d& pose) {
     require_body(body, "body");
     require_finite(pose.matrix(), "pose");
+    require_coordinates(pose.translation(), "pose");
     RigidBody<S>& b = bodies_[static_cast<std::size_t>(body)];
     b.R = orthonormalized(pose.linear().template cast<S>());
     b.q = detail::Quat<S>(b.R).normalized();
@@ -199,26 +257,40 @@ class World {
   }
 
   /// Sets the velocity of body \p body: \p v of its centre of mass (m/s) and \p w (rad/s), both
-  /// in the world frame. Ignored for fixed bodies. Throws for a bad index or non-finite values.
+  /// in the world frame. Ignored for fixed bodies. Throws topograsp::invalid_argument for a bad
+  /// index, non-finite values, or a speed |v| or |w| above StepperOptions::max_speed (which would
+  /// end the run at the next step).
   void set_velocity(int body, const Eigen::Vector3d& v, const Eigen::Vector3d& w) {
     require_body(body, "body");
     require_finite(v, "v");
     require_finite(w, "w");
+    if (!(v.norm() <= options_.max_speed))
+      detail::throw_invalid_argument(
+          "v", "expected a speed of at most options.max_speed = " + number(options_.max_speed) +
+                   " m/s, got " + number(v.norm()));
+    if (!(w.norm() <= options_.max_speed))
+      detail::throw_invalid_argument(
+          "w", "expected a speed of at most options.max_speed = " + number(options_.max_speed) +
+                   " rad/s, got " + number(w.norm()));
     RigidBody<S>& b = bodies_[static_cast<std::size_t>(body)];
     if (b.type == BodyType::fixed) return;
     b.v = v.template cast<S>();
     b.w = w.template cast<S>();
   }
 
-  /// Sets gravity (m/s^2, world frame). Throws topograsp::invalid_argument for non-finite values.
+  /// Sets gravity (m/s^2, world frame). Throws topograsp::invalid_argument naming "g" for
+  /// non-finite values or when |g| * time_step^2 exceeds StepperOptions::speculative_distance
+  /// (see the constructor).
   void set_gravity(const Eigen::Vector3d& g) {
     require_finite(g, "g");
+    require_step_catches_fall(g, "g");
     gravity_ = g.template cast<S>();
   }
   [[nodiscard]] V3 gravity() const noexcept { return gravity_; }
 
   /// Advances the world by one time step (see the class comment). Allocates nothing. Returns
-  /// Status::success, or Status::numerical_issue when the state became non-finite or too fast; then
+  /// Status::success, or Status::numerical_issue when the state became non-finite, too fast or too
+  /// far (beyond max_length()); then
   /// the step is undone (every number stays finite) and later calls do nothing and return it again.
   Status step() noexcept {
     if (status_ != Status::success) return status_;
@@ -339,6 +411,88 @@ class World {
                                                    std::to_string(bodies_.size()) + "), got " +
                                                    std::to_string(body));
   }
+  template <class T>
+  static std::string number(T v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", static_cast<double>(v));
+    return buf;
+  }
+  void require_step_catches_fall(const Eigen::Vector3d& g, std::string_view argument) const {
+    const double dt = options_.time_step;
+    const double fall = g.norm() * dt * dt;
+    if (!(fall <= options_.speculative_distance))
+      detail::throw_invalid_argument(
+          argument, "a body released at rest falls |g| dt^2 = " + number(fall) +
+                        " m in one step, more than options.speculative_distance = " +
+                        number(options_.speculative_distance) +
+                        " m, so contacts would miss it (time_step " + number(dt) + " s, |g| " +
+                        number(g.norm()) + " m/s^2): use a shorter time step");
+  }
+  template <class D>
+  static void require_coordinates(const Eigen::MatrixBase<D>& p, std::string_view argument) {
+    for (Eigen::Index k = 0; k < p.size(); ++k)
+      if (!(std::abs(static_cast<double>(p[k])) <= static_cast<double>(max_length())))
+        detail::throw_invalid_argument(argument, "expected coordinates of at most " +
+                                                     number(max_length()) + " m, got " +
+                                                     number(static_cast<double>(p[k])));
+  }
+  static void require_coordinates(const std::array<double, 3>& p, std::string_view argument) {
+    require_coordinates(Eigen::Map<const Eigen::Vector3d>(p.data()), argument);
+  }
+  static void require_representable_shape(const ShapeSpec& s, const std::string& argument) {
+    const int n = s.type == ShapeType::sphere ? 1 : s.type == ShapeType::box ? 3 : 2;
+    for (int k = 0; k < n; ++k) {
+      const double v = s.size[static_cast<std::size_t>(k)];
+      if (v == 0.0 && s.type == ShapeType::capsule && k == 1)
+        continue;  // a capsule may be a sphere
+      if (!(v >= static_cast<double>(min_length()) && v <= static_cast<double>(max_length())))
+        detail::throw_invalid_argument(argument + ".size[" + std::to_string(k) + "]",
+                                       "expected a size in [" + number(min_length()) + ", " +
+                                           number(max_length()) + "] m, got " + number(v));
+    }
+    require_coordinates(s.pose.p, argument + ".pose");
+  }
+  void require_representable_mass(const RigidBody<S>& b, std::string_view argument) const {
+    const S smin = std::numeric_limits<S>::min(), smax = std::numeric_limits<S>::max();
+    const S v2 = static_cast<S>(options_.max_speed) * static_cast<S>(options_.max_speed);
+    const bool mass_ok = std::isfinite(b.mass) && b.mass >= smin && std::isfinite(b.inv_mass) &&
+                         b.mass <= smax / v2 && b.local_com.allFinite();
+    if (!mass_ok)
+      detail::throw_invalid_argument(
+          argument, "the body's mass " + number(static_cast<double>(b.mass)) +
+                        " kg is not representable: expected a normal positive number whose "
+                        "kinetic energy at options.max_speed stays finite, within [" +
+                        number(static_cast<double>(smin)) + ", " +
+                        number(static_cast<double>(smax / v2)) + "] kg");
+    bool inertia_ok =
+        b.inertia.allFinite() && b.inv_inertia_local.allFinite() && b.inv_inertia.allFinite();
+    for (int k = 0; k < 3 && inertia_ok; ++k)
+      inertia_ok = b.inertia(k, k) >= smin && b.inertia(k, k) <= smax / v2 &&
+                   b.inv_inertia_local(k, k) > S(0);
+    if (!inertia_ok)
+      detail::throw_invalid_argument(
+          argument, "the body's inertia (diagonal " + number(static_cast<double>(b.inertia(0, 0))) +
+                        ", " + number(static_cast<double>(b.inertia(1, 1))) + ", " +
+                        number(static_cast<double>(b.inertia(2, 2))) +
+                        " kg m^2) is not representable: expected normal positive numbers with a "
+                        "finite inverse whose kinetic energy at options.max_speed stays finite, "
+                        "within [" +
+                        number(static_cast<double>(smin)) + ", " +
+                        number(static_cast<double>(smax / v2)) + "] kg m^2");
+  }
+  // The inverse of a symmetric positive definite 3x3 matrix. Eigen's closed-form inverse forms
+  // products of three entries, which overflow or underflow for entries beyond about 1e100 (or
+  // 1e12 in float): outside [2^-k, 2^k], k a sixth of the exponent range of S, the matrix is
+  // first scaled by an exact power of two, inv(A) = 2^-e inv(A 2^-e). Inside, the plain inverse.
+  static M3 inverse_in_range(const M3& A) {
+    const S m = A.cwiseAbs().maxCoeff();
+    constexpr int k = std::numeric_limits<S>::max_exponent / 6;
+    if (!(m > S(0)) || !std::isfinite(m) || (m >= std::ldexp(S(1), -k) && m <= std::ldexp(S(1), k)))
+      return A.inverse();
+    int e = 0;
+    (void)std::frexp(m, &e);
+    return M3(M3(A * std::ldexp(S(1), -e)).inverse() * std::ldexp(S(1), -e));
+  }
   static M3 orthonormalized(const M3& R) noexcept {
     return detail::Quat<S>(R).normalized().toRotationMatrix();
   }
@@ -372,11 +526,13 @@ class World {
   }
   [[nodiscard]] bool state_ok() const noexcept {
     const S vmax = static_cast<S>(options_.max_speed);
+    const S xmax = max_length();
     for (const RigidBody<S>& b : bodies_) {
       if (b.type != BodyType::dynamic) continue;
       if (!b.x.allFinite() || !b.v.allFinite() || !b.w.allFinite() || !b.q.coeffs().allFinite())
         return false;
       if (b.v.norm() > vmax || b.w.norm() > vmax) return false;
+      if (b.x.cwiseAbs().maxCoeff() > xmax) return false;
     }
     return true;
   }

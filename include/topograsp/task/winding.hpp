@@ -7,6 +7,7 @@
 #include <cmath>
 #include <concepts>
 #include <cstddef>
+#include <limits>
 #include <ranges>
 #include <span>
 #include <string>
@@ -26,15 +27,50 @@ concept PointRange =
 
 namespace detail {
 
+/// The exponent applied to bring vectors into the working range of angle_between() and
+/// angle_gradient(): a vector whose largest component magnitude m lies in
+/// [2^-k_winding_exponent, 2^k_winding_exponent] is used as it is (so the ordinary case is exactly
+/// the plain formula); any other is scaled by the power of two 2^-e that brings m into [0.5, 1).
+/// Within the range |a x b|^2 (fourth powers of the coordinates; Eigen's norm() squares) and
+/// every product of angle_gradient() stay normal and finite.
+inline constexpr int k_winding_exponent = 250;
+
+/// Scales \p v by an exact power of two into the working range (see k_winding_exponent) and
+/// writes the exponent e with v_before = v_after * 2^e into \p e (0 if it was not scaled).
+/// Returns false (leaving \p v) if v's largest component is below the smallest normal double
+/// (2.2e-308): such a vector counts as zero, as a vertex at the reference point does.
+[[nodiscard]] inline bool to_working_range(Vec3& v, int& e) noexcept {
+  const double m = v.cwiseAbs().maxCoeff();
+  e = 0;
+  if (!(m >= std::numeric_limits<double>::min())) return false;
+  if (m >= 0x1p-250 && m <= 0x1p250) return true;  // 2^-+k_winding_exponent
+  (void)std::frexp(m, &e);
+  v *= std::ldexp(1.0, -e);  // exact: a power of two in [2^-1024, 2^1021]
+  return true;
+}
+
 /// The unsigned angle between \p a and \p b in [0, pi], as atan2(|a x b|, a . b); 0 if either
-/// vector is zero.
-[[nodiscard]] inline double angle_between(const Vec3& a, const Vec3& b) noexcept {
+/// vector is zero (or below the smallest normal double). Each vector is first scaled by a power
+/// of two into the working range (the angle does not depend on their lengths), so the products
+/// neither overflow nor underflow for any finite input.
+[[nodiscard]] inline double angle_between(Vec3 a, Vec3 b) noexcept {
+  int ea = 0, eb = 0;
+  if (!to_working_range(a, ea) || !to_working_range(b, eb)) return 0.0;
   return std::atan2(a.cross(b).norm(), a.dot(b));
 }
 
 /// The angle between a and b and its gradients: d angle / d a into \p ga and d angle / d b into
 /// \p gb. Where the angle is not differentiable (a or b zero, a parallel to b) both are zero.
-inline double angle_gradient(const Vec3& a, const Vec3& b, Vec3& ga, Vec3& gb) noexcept {
+/// Scaled into the working range like angle_between(); the gradients are scaled back
+/// (d angle / d a scales as 1 / |a|), and they are finite for every vector that is not counted
+/// as zero.
+inline double angle_gradient(Vec3 a, Vec3 b, Vec3& ga, Vec3& gb) noexcept {
+  int ea = 0, eb = 0;
+  if (!to_working_range(a, ea) || !to_working_range(b, eb)) {
+    ga.setZero();
+    gb.setZero();
+    return 0.0;
+  }
   const Vec3 n = a.cross(b);
   const double s = n.norm(), c = a.dot(b);
   const double theta = std::atan2(s, c);
@@ -49,6 +85,9 @@ inline double angle_gradient(const Vec3& a, const Vec3& b, Vec3& ga, Vec3& gb) n
   const Vec3 nh = n / s;
   ga = -nh.cross(a) / aa;
   gb = nh.cross(b) / bb;
+  // a was divided by 2^ea, so d theta / d a_original = d theta / d a_scaled * 2^-ea.
+  if (ea != 0) ga *= std::ldexp(1.0, -ea);
+  if (eb != 0) gb *= std::ldexp(1.0, -eb);
   return theta;
 }
 
@@ -88,6 +127,14 @@ void require_curve(const R& points, const Vec3& p, std::string_view name = "poin
     ++i;
   }
   require_finite(p, "p");
+  i = 0;
+  for (const Eigen::Vector3d& x : points) {
+    if (!(x - p).allFinite())
+      throw_invalid_argument(name, "point " + std::to_string(i) +
+                                       " minus p overflows (each coordinate of X_i - p must stay "
+                                       "within the double range, about 1.8e308)");
+    ++i;
+  }
 }
 
 }  // namespace detail
@@ -105,11 +152,18 @@ void require_curve(const R& points, const Vec3& p, std::string_view name = "poin
 /// Degenerate cases: a vertex at p contributes no angle to either of its segments (so w stays
 /// finite; the curve passing through p is where w jumps). A zero-length segment contributes 0.
 ///
+/// Range: w is finite and scale-invariant over the whole finite double range. Each X_i - p is
+/// brought to unit size by an exact power of two before the cross and dot products (vectors whose
+/// largest coordinate lies in [2^-250, 2^250] are used as they are), so a curve scaled by any
+/// factor from 1e-300 to 1e300 gives the same w to rounding. A vertex whose largest coordinate
+/// of X_i - p is below the smallest normal double (2.2e-308) counts as a vertex at p.
+///
 /// \param[in] points the vertices X_0..X_{n-1} (m), any contiguous range of Eigen::Vector3d
 /// \param[in] p the reference point (m), e.g. an object's centre of mass
 /// \return w (turns; dimensionless)
-/// \throws topograsp::invalid_argument naming "points" if there are fewer than 2 points or a
-///         point is not finite, naming "p" if p is not finite.
+/// \throws topograsp::invalid_argument naming "points" if there are fewer than 2 points, a
+///         point is not finite or a difference X_i - p overflows (finite points more than
+///         1.8e308 apart), naming "p" if p is not finite.
 template <PointRange R>
 [[nodiscard]] double winding(const R& points, const Eigen::Vector3d& p) {
   detail::require_curve(points, p);
@@ -122,7 +176,9 @@ template <PointRange R>
 ///
 /// Where w is not differentiable (a vertex at p, two consecutive vertices in line with p) the
 /// terms of the affected angle are zero, a valid one-sided choice; everywhere else the gradient
-/// is exact.
+/// is exact. The gradient scales as 1 / scale (a curve scaled by s about p has gradient / s) and
+/// is finite for every accepted input: each term is computed at unit size and scaled back by an
+/// exact power of two, and a term is at most about 1 / |X_i - p| <= 1 / 2.2e-308.
 ///
 /// \throws topograsp::invalid_argument as winding(), and naming "gradient" if its size differs
 ///         from the number of points.

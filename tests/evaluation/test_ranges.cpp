@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Finite but out-of-range input to the hand scene and to close_hand: refused with a readable
+// error naming the argument, or reported as a status, never std::terminate, a hang or UB.
+#include "evaluation_test_support.hpp"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <catch2/catch.hpp>
+#include "support/throws.hpp"
+
+using namespace topograsp;
+using test::cylinder_object;
+
+TEST_CASE("a finite hand pose beyond the documented range is refused with a readable error",
+          "[evaluation][input]") {
+  // z = 1.7e308 used to be accepted, and the noexcept step() then called a function that threw:
+  // std::terminate.
+  HandScene<models::schunk_sdh> scene = test::sdh_bottle_scene();
+  Eigen::Isometry3d far = scene.hand_pose();
+  far.translation().z() = 1.7e308;
+  test::check_throws_naming([&] { scene.set_hand_pose(far); }, "pose");
+  try {
+    scene.set_hand_pose(far);
+  } catch (const invalid_argument& e) {
+    CHECK_THAT(e.what(), Catch::Contains("at most 1e6 m") && Catch::Contains("1.7e+308"));
+  }
+  test::check_throws_naming([&] { scene.place_hand(far, scene.joint_targets()); }, "pose");
+  test::check_throws_naming(
+      [&] {
+        HandScene<models::schunk_sdh> s(far, scene.joint_targets(),
+                                        cylinder_object(Eigen::Isometry3d::Identity(), {0, 0, 0.16},
+                                                        Eigen::Vector3d::UnitY(), 0.03, 0.05, 0.2));
+      },
+      "hand_pose");
+  // A linear part that is not a rotation.
+  Eigen::Isometry3d skew = scene.hand_pose();
+  skew.linear() *= 2.0;
+  test::check_throws_naming([&] { scene.set_hand_pose(skew); }, "pose");
+  // The scene is untouched and still steps.
+  CHECK(scene.step() == Status::success);
+  // At the bound itself it is accepted.
+  Eigen::Isometry3d edge = scene.hand_pose();
+  edge.translation().z() = HandScene<models::schunk_sdh>::k_max_hand_coordinate;
+  CHECK_NOTHROW(scene.set_hand_pose(edge));
+}
+
+TEST_CASE("a joint target that puts a link out of range makes step() report invalid_input",
+          "[evaluation][input]") {
+  // The free-base SDH: its first joints are the base's translation, so a finite but huge target
+  // puts every link beyond the World's range. step() is noexcept: it reports, it does not throw.
+  constexpr auto& f = models::schunk_sdh_free;
+  Vec<f.nq> q = Vec<f.nq>::Zero();
+  q.tail<7>() << 0.0, -0.6, 0.3, -0.6, 0.3, -0.6, 0.3;
+  const Eigen::Isometry3d hand = Eigen::Isometry3d::Identity();
+  HandScene<f> scene(hand, q,
+                     cylinder_object(hand, {0, 0, 0.4}, Eigen::Vector3d::UnitY(), 0.03, 0.05, 0.2));
+  REQUIRE(scene.step() == Status::success);
+  const Eigen::Isometry3d before = scene.object_pose();
+  Vec<f.nq> far = q;
+  far[0] = 1e300;
+  scene.set_joint_targets(far);
+  CHECK(scene.step() == Status::invalid_input);
+  CHECK(scene.world().status() == Status::success);
+  CHECK(scene.object_pose().isApprox(before, 0.0));  // nothing moved
+  // With sane targets again, the scene goes on.
+  scene.set_joint_targets(q);
+  CHECK(scene.step() == Status::success);
+}
+
+TEST_CASE("close_hand refuses a step that would take too many increments", "[evaluation][input]") {
+  // step = 1e-8 rad ran for minutes (3e8 increments); 1e-10 overflowed the float-to-int cast.
+  for (const double step : {1e-8, 1e-10, 1e-300, std::numeric_limits<double>::denorm_min()}) {
+    CAPTURE(step);
+    HandScene<models::schunk_sdh> scene = test::sdh_bottle_scene();
+    CloseOptions o;
+    o.step = step;
+    test::check_throws_naming([&] { (void)close_hand(scene, o); }, "options.step");
+  }
+  try {
+    HandScene<models::schunk_sdh> scene = test::sdh_bottle_scene();
+    CloseOptions o;
+    o.step = 1e-10;
+    (void)close_hand(scene, o);
+  } catch (const invalid_argument& e) {
+    CHECK_THAT(e.what(), Catch::Contains("expected at least") && Catch::Contains("1e-10"));
+  }
+  // The other counts are bounded too.
+  HandScene<models::schunk_sdh> scene = test::sdh_bottle_scene();
+  CloseOptions o;
+  o.bisections = 1000000000;
+  test::check_throws_naming([&] { (void)close_hand(scene, o); }, "options.bisections");
+  o = {};
+  o.squeeze_steps = std::numeric_limits<int>::max();
+  test::check_throws_naming([&] { (void)close_hand(scene, o); }, "options.squeeze_steps");
+  o = {};
+  o.squeeze = -1.0;
+  test::check_throws_naming([&] { (void)close_hand(scene, o); }, "options.squeeze");
+  // A huge step is fine: one increment reaches the limit.
+  o = {};
+  o.step = 1e300;
+  const auto r = close_hand(scene, o);
+  CHECK(r.status == Status::success);
+  CHECK(r.q_squeezed.allFinite());
+}
+
+TEST_CASE("the shake and gravity tests bound their counts and angles", "[evaluation][input]") {
+  HandScene<models::schunk_sdh> scene = test::sdh_bottle_scene();
+  const int big = std::numeric_limits<int>::max();  // settle + shake steps overflowed the count
+  ShakeOptions o;
+  o.settle_steps = big;
+  test::check_throws_naming([&] { (void)shake_test(scene, o); }, "options.settle_steps");
+  o = {};
+  o.shake_steps = big;
+  test::check_throws_naming([&] { (void)shake_test(scene, o); }, "options.shake_steps");
+  test::check_throws_naming([&] { (void)gravity_test(scene, o); }, "options.shake_steps");
+  o = {};
+  o.shakes = big;
+  test::check_throws_naming([&] { (void)shake_test(scene, o); }, "options.shakes");
+  o = {};
+  o.min_angle = -1e308;  // max - min overflowed to inf: a NaN hand pose mid-shake
+  o.max_angle = 1e308;
+  test::check_throws_naming([&] { (void)shake_test(scene, o); }, "options.min_angle");
+  o.min_angle = 0.0;
+  test::check_throws_naming([&] { (void)shake_test(scene, o); }, "options.max_angle");
+  // The scene was not stepped by any refused call.
+  CHECK(scene.world().steps() == 0);
+}
+
+TEST_CASE("an object the World cannot represent is refused naming the object",
+          "[evaluation][input]") {
+  const Eigen::Isometry3d hand = test::sdh_side_pose();
+  Vec<7> q;
+  q << 0.0, -0.6, 0.3, -0.6, 0.3, -0.6, 0.3;
+  ObjectSpec o = cylinder_object(hand, {0, 0, 0.15}, Eigen::Vector3d::UnitY(), 0.035, 0.1, 0.5);
+  o.mass = 1e306;  // its kinetic energy at max_speed overflows
+  test::check_throws_naming([&] { HandScene<models::schunk_sdh> s(hand, q, o); }, "object.mass");
+  try {
+    HandScene<models::schunk_sdh> s(hand, q, o);
+  } catch (const invalid_argument& e) {
+    CHECK_THAT(e.what(), Catch::Contains("not representable") && Catch::Contains("1e+306"));
+  }
+  o.mass = 0.5;
+  o.shapes[0].size[0] = 1e200;  // a cylinder radius beyond the length range
+  test::check_throws_naming([&] { HandScene<models::schunk_sdh> s(hand, q, o); },
+                            "object.shapes[0].size[0]");
+}
