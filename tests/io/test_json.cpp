@@ -116,3 +116,17 @@ TEST_CASE("every json parse error is a topograsp::invalid_argument", "[io][json]
     }
   }
 }
+
+TEST_CASE("Json numbers survive a dump and a parse bit for bit", "[io][json]") {
+  // Found by the JSON fuzzer: dump() wrote 10 significant digits.
+  for (const double d : {7.11131131111, 0.1, 1.0 / 3.0, 12345678901234567890.0, -2.5e-308,
+                         1.7976931348623157e308, 4.9e-324, 0.8378378378378378, 1e15, -1e14}) {
+    Json list = Json::array();
+    list.push_back(d);
+    const Json back = Json::parse(list.dump(0));
+    CHECK(back.as_array()[0].as_number() == d);
+  }
+  Json small = Json::array();
+  small.push_back(0.5312).push_back(101);
+  CHECK(small.dump(0) == "[0.5312,101]");
+}

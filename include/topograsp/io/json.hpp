@@ -85,8 +85,9 @@ class Json {
     throw std::out_of_range("json: no key \"" + std::string(key) + "\"");
   }
 
-  /// The value as JSON text; \p indent spaces per level (0: one line). Non-finite numbers are
-  /// written as null, since JSON has no NaN.
+  /// The value as JSON text; \p indent spaces per level (0: one line). A number is written as
+  /// the shortest text that parses back to the same double (integers below 1e15 without a
+  /// fraction); non-finite numbers are written as null, since JSON has no NaN.
   [[nodiscard]] std::string dump(int indent = 2) const {
     std::string out;
     write(out, indent, 0);
@@ -171,9 +172,11 @@ class Json {
         } else if (d == std::floor(d) && std::abs(d) < 1e15) {
           out += std::to_string(static_cast<long long>(d));
         } else {
+          // The shortest text that reads back as the same double (std::to_chars without a
+          // precision), so a dumped document re-parses to equal numbers.
           char buf[32];
-          std::snprintf(buf, sizeof buf, "%.10g", d);
-          out += buf;
+          const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, d);
+          out.append(buf, ec == std::errc() ? end : buf);
         }
         break;
       }
