@@ -87,18 +87,24 @@ class World {
   }
 
   /// An empty world. Throws topograsp::invalid_argument naming the option if one is out of range:
-  /// a non-positive time step, fewer than 1 or more than 1000 sub-steps, a negative stiffness, a
-  /// non-finite value, a max_speed above max_length(), or a time step too long for the speculative
-  /// contacts to catch a body under gravity: |gravity| * time_step^2 must not exceed
-  /// speculative_distance (a body released at rest moves g dt^2 in its first step, semi-implicit
-  /// Euler; a longer step lets it pass into or through a surface before any contact exists: with dt
-  /// = 1 s a box falls 9.8 m in one step, through a 1 m thick ground). The defaults give 9.81 /
-  /// 60^2 = 2.7 mm <= 5 mm.
+  /// a non-positive time step or one whose sub-step (time_step / substeps, in S) is below
+  /// min_length() (1e-203 s is 0 in float: the step divided by it), fewer than 1 or more than 1000
+  /// sub-steps, a negative stiffness, a non-finite value, a max_speed above max_length(), or a time
+  /// step too long for the speculative contacts to catch a body under gravity: |gravity| *
+  /// time_step^2 must not exceed speculative_distance (a body released at rest moves g dt^2 in its
+  /// first step, semi-implicit Euler; a longer step lets it pass into or through a surface before
+  /// any contact exists: with dt = 1 s a box falls 9.8 m in one step, through a 1 m thick ground).
+  /// The defaults give 9.81 / 60^2 = 2.7 mm <= 5 mm.
   explicit World(const StepperOptions& options = {}) : options_(options) {
     require_positive(options.time_step, "options.time_step");
     if (options.substeps < 1 || options.substeps > 1000)
       detail::throw_invalid_argument("options.substeps",
                                      "expected 1 to 1000, got " + std::to_string(options.substeps));
+    if (!(static_cast<S>(options.time_step) / static_cast<S>(options.substeps) >= min_length()))
+      detail::throw_invalid_argument(
+          "options.time_step",
+          "a sub-step (time_step / substeps) of " + number(options.time_step / options.substeps) +
+              " s is below what the scalar type divides by safely (" + number(min_length()) + ")");
     for (std::size_t k = 0; k < 3; ++k) require_finite(options.gravity[k], "options.gravity");
     require_positive(options.contact_hertz, "options.contact_hertz");
     require_non_negative(options.contact_damping_ratio, "options.contact_damping_ratio");
