@@ -31,20 +31,6 @@ namespace {
 using topograsp::ShapeType;
 using namespace topograsp::fuzz;
 
-const char* type_name(ShapeType t) {
-  switch (t) {
-    case ShapeType::sphere:
-      return "sphere";
-    case ShapeType::capsule:
-      return "capsule";
-    case ShapeType::box:
-      return "box";
-    case ShapeType::cylinder:
-      return "cylinder";
-  }
-  return "?";
-}
-
 struct Shape {
   ShapeType type = ShapeType::sphere;
   Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
@@ -75,8 +61,8 @@ Shape read_shape(FuzzInput& in) {
 }
 
 std::string describe(const Shape& s, const char* name) {
-  return std::string(name) + ": " + type_name(s.type) + ", size " + vec_str(s.size) + ", p " +
-         vec_str(s.p) + ", R " + mat_str(s.R) + "\n";
+  return std::string(name) + ": " + std::string(to_string(s.type)) + ", size " + vec_str(s.size) +
+         ", p " + vec_str(s.p) + ", R " + mat_str(s.R) + "\n";
 }
 
 topograsp::Primitive primitive(const Shape& s) {

@@ -66,20 +66,6 @@ Primitive translated(Primitive s, const Vec3& t) {
 const std::array<ShapeType, 4> k_types{ShapeType::sphere, ShapeType::capsule, ShapeType::box,
                                        ShapeType::cylinder};
 
-const char* name(ShapeType t) {
-  switch (t) {
-    case ShapeType::sphere:
-      return "sphere";
-    case ShapeType::capsule:
-      return "capsule";
-    case ShapeType::box:
-      return "box";
-    case ShapeType::cylinder:
-      return "cylinder";
-  }
-  return "?";
-}
-
 }  // namespace
 
 TEST_CASE("signed distance of separated shapes is the exact distance for every pair",
@@ -93,7 +79,7 @@ TEST_CASE("signed distance of separated shapes is the exact distance for every p
         const Contact c = signed_distance(a, b);
         if (c.distance <= 1e-6) continue;
         ++separated;
-        INFO(name(ta) << " vs " << name(tb) << " trial " << trial);
+        INFO(to_string(ta) << " vs " << to_string(tb) << " trial " << trial);
         REQUIRE(std::isfinite(c.distance));
         CHECK(c.normal.norm() == Approx(1.0).epsilon(1e-12));
         CHECK((c.point_b - c.point_a - c.distance * c.normal).norm() < 1e-12);
@@ -123,7 +109,7 @@ TEST_CASE("signed distance of overlapping shapes is minus the penetration depth"
         const Contact c = signed_distance(a, b);
         if (c.distance >= -1e-4) continue;
         ++overlapping;
-        INFO(name(ta) << " vs " << name(tb) << " trial " << trial << " d " << c.distance);
+        INFO(to_string(ta) << " vs " << to_string(tb) << " trial " << trial << " d " << c.distance);
         // EPA on a cylinder's curved rim stops at a tolerance; polytope cores are exact.
         const bool curved = ta == ShapeType::cylinder || tb == ShapeType::cylinder;
         const double tol_depth = curved ? 1e-7 : 1e-10, tol_witness = curved ? 3e-5 : 1e-10;
@@ -170,7 +156,7 @@ TEST_CASE("the distance changes by the normal component of a rigid motion", "[ge
             (signed_distance(a, moved(h)).distance - signed_distance(a, moved(-h)).distance) /
             (2 * h);
         const double analytic = c.normal.dot(v + w.cross(c.point_b - o));
-        INFO(name(ta) << " vs " << name(tb) << " trial " << trial << " d " << c.distance);
+        INFO(to_string(ta) << " vs " << to_string(tb) << " trial " << trial << " d " << c.distance);
         // With a cylinder GJK and EPA approach the curved rim iteratively: the witness points
         // (and so the gradient) are less accurate than the distance itself.
         const bool curved = ta == ShapeType::cylinder || tb == ShapeType::cylinder;

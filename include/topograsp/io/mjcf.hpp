@@ -22,25 +22,11 @@ inline void write_mjcf_pose(std::ostream& os, const Eigen::Isometry3d& T) {
      << "\" quat=\"" << q.w() << ' ' << q.x() << ' ' << q.y() << ' ' << q.z() << '"';
 }
 
-inline std::string_view mjcf_geom_type(ShapeType t) {
-  switch (t) {
-    case ShapeType::sphere:
-      return "sphere";
-    case ShapeType::capsule:
-      return "capsule";
-    case ShapeType::box:
-      return "box";
-    case ShapeType::cylinder:
-      return "cylinder";
-  }
-  return "sphere";
-}
-
 // One geom: the shape at `T` (in the enclosing body's frame).
 inline void write_mjcf_geom(std::ostream& os, std::string_view indent, const std::string& name,
                             const ShapeSpec& s, const Eigen::Isometry3d& T, double mu,
                             double torsion) {
-  os << indent << "<geom name=\"" << name << "\" type=\"" << mjcf_geom_type(s.type) << "\" size=\"";
+  os << indent << "<geom name=\"" << name << "\" type=\"" << to_string(s.type) << "\" size=\"";
   switch (s.type) {
     case ShapeType::sphere:
       os << s.size[0];

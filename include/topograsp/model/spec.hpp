@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string_view>
 
 #include <topograsp/core/pose.hpp>
 #include <topograsp/model/name.hpp>
@@ -100,6 +101,21 @@ enum class ShapeType : std::uint8_t {
   box,       ///< size = half extents {x, y, z}
   cylinder,  ///< size = {radius, half height, -}
 };
+
+/// The shape type's name ("sphere", "capsule", "box", "cylinder"; MJCF's geom types use the same).
+[[nodiscard]] constexpr std::string_view to_string(ShapeType t) noexcept {
+  switch (t) {
+    case ShapeType::sphere:
+      return "sphere";
+    case ShapeType::capsule:
+      return "capsule";
+    case ShapeType::box:
+      return "box";
+    case ShapeType::cylinder:
+      return "cylinder";
+  }
+  return "unknown";
+}
 
 /// A collision shape fixed to a link.
 struct ShapeSpec {
