@@ -80,7 +80,8 @@ int main(int argc, char** argv) {
   // untouched) instead of the signal ending the process.
   (void)std::signal(SIGXFSZ, SIG_IGN);
 #endif
-  bool started = false;  // exit status 2 before the computation starts, 1 after
+  bool started = false;     // exit status 2 before the computation starts, 1 after
+  bool committing = false;  // the output folder's commit has started
   try {
     const std::vector<std::string_view> args(argv + 1, argv + argc);
     const CommandLine cli = parse_command_line(args);
@@ -123,6 +124,7 @@ int main(int argc, char** argv) {
     detail::write_text_file(stage / "results.json",
                             results_json(cli.experiment, results).dump(2) + "\n");
     if (cli.figures) (void)write_report(stage, results);
+    committing = true;
     folder.commit();
     print_table(cli.experiment, results);
     std::printf("\n%.1f s with %d job(s); results in %s%s\n", seconds, cli.experiment.jobs,
@@ -131,7 +133,10 @@ int main(int argc, char** argv) {
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "grasp_transfer: " << e.what() << '\n';
-    if (started)
+    if (committing)
+      std::cerr << "grasp_transfer: the commit failed part way; the output folder has no "
+                   "results.json, and the new run is in the staging folder named above\n";
+    else if (started)
       std::cerr << "grasp_transfer: the previous run in the output folder is untouched\n";
     return started ? 1 : 2;
   }

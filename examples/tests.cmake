@@ -24,8 +24,8 @@ foreach(case IN ITEMS "unknown object|--objects anvil|--objects: unknown object 
                       "too many jobs|--jobs 100000|--jobs: expected 1 to 1024"
                       "unwritable out|--out /proc/grasp_transfer|--out: cannot"
                       "unknown parameter|--set reach=1|unknown transfer parameter \"reach\""
-                      "negative parameter|--set final_approach=-1|value: final_approach must be in"
-                      "parameter out of range|--set backoff=1e300|--set: value: backoff must be in \\[0, 0.3\\]"
+                      "negative parameter|--set final_approach=-1|final_approach: must be in"
+                      "parameter out of range|--set backoff=1e300|--set: backoff: must be in \\[0, 0.3\\]"
                       "parameter set twice|--set backoff=0.1 --set backoff=0.2|--set: backoff is set twice"
                       "parameter without value|--set final_approach|--set: expected NAME=VALUE"
                       "unknown winding reference|--winding-reference palm|--winding-reference: unknown reference")

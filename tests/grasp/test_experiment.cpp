@@ -205,8 +205,9 @@ TEST_CASE("transfer parameters are set and recorded by name", "[grasp][bad-input
   CHECK(o.line_precision_end == 0.0);
   CHECK_THROWS_WITH(set_transfer_parameter(o, "reach", 1.0),
                     Catch::StartsWith("name") && Catch::Contains("final_approach"));
-  CHECK_THROWS_WITH(set_transfer_parameter(o, "backoff", -0.1), Catch::StartsWith("value"));
-  CHECK_THROWS_WITH(set_transfer_parameter(o, "backoff", std::nan("")), Catch::StartsWith("value"));
+  CHECK_THROWS_WITH(set_transfer_parameter(o, "backoff", -0.1), Catch::StartsWith("backoff"));
+  CHECK_THROWS_WITH(set_transfer_parameter(o, "backoff", std::nan("")),
+                    Catch::StartsWith("backoff"));
   CHECK(o.backoff == TransferOptions{}.backoff);  // unchanged by the rejected calls
   // results.json records every parameter under config.transfer.
   ExperimentOptions c = small_options(1);

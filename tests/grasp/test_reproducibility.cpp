@@ -109,7 +109,7 @@ TEST_CASE("duplicate objects or methods are refused before any work", "[grasp][b
   CHECK_THROWS_WITH(run_experiment(c), "methods: \"transplant\" is given twice (each method once)");
   c = options({objects::hammer()});
   c.transfer.backoff = 1e300;  // refused up front, by name, not after hours of planning
-  CHECK_THROWS_WITH(run_experiment(c), Catch::StartsWith("value: backoff must be in [0, 0.3]"));
+  CHECK_THROWS_WITH(run_experiment(c), Catch::StartsWith("backoff: must be in [0, 0.3]"));
   c = options({objects::hammer()});
   c.max_hypotheses = -1;
   CHECK_THROWS_WITH(run_experiment(c), Catch::StartsWith("max_hypotheses"));

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // A transfer method that cannot do its work says so (planned false, a reason), and never reports
 // another method's pose, or its own starting pose, as its result.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -50,8 +51,11 @@ TEST_CASE("a fingertip fit whose cost overflows is not reported as a fingertip t
   // with its tips far from them (the free base reaches 10 m), and that is not a fingertip grasp.
   for (const double scale : {1e3, 1e120}) {
     options.fingertip_scale = scale;
-    check_not_planned(transfer_fingertip(hammer, hammer_grasp(), options),
-                      TransferMethod::fingertip, "the fingertip fit did not reach the targets");
+    const RobotGrasp far = transfer_fingertip(hammer, hammer_grasp(), options);
+    INFO("scale " << scale << ": " << far.reason);
+    check_not_planned(far, TransferMethod::fingertip, "the fingertip fit");
+    CHECK((far.reason.find("did not reach the targets") != std::string::npos ||
+           far.reason.find("accepted no step") != std::string::npos));
   }
   // The default scale still plans.
   const RobotGrasp ok = transfer_fingertip(hammer, hammer_grasp(), TransferOptions{});
@@ -83,4 +87,25 @@ TEST_CASE("a human grasp with NaN windings is refused, not planned toward",
   g.descriptor.values[0] = std::numeric_limits<double>::quiet_NaN();
   const RobotGrasp r = transfer_topological(hammer, g, TransferOptions{});
   check_not_planned(r, TransferMethod::topological, "the human windings are not finite");
+}
+
+TEST_CASE("a fit or a plan that accepted no step is not reported as a transfer",
+          "[grasp][transfer][bad-input]") {
+  const GraspObject hammer = objects::hammer();
+  // No iteration of the fingertip fit: it never leaves the transplant pose it starts from, which
+  // used to be simulated and reported as the fingertip transfer.
+  TransferOptions options;
+  options.fingertip_iterations = 0;
+  check_not_planned(transfer_fingertip(hammer, hammer_grasp(), options), TransferMethod::fingertip,
+                    "the fingertip fit accepted no step");
+  // An AICO plan that accepts no sweep (one sweep allowed, and the first sweep only initialises)
+  // is the ready pose held still: not a topological transfer, whatever ended the plan.
+  TransferOptions one_sweep;
+  one_sweep.aico.max_sweeps = 1;
+  const RobotGrasp r = transfer_topological(hammer, hammer_grasp(), one_sweep);
+  CHECK(std::none_of(r.sweep_log.begin(), r.sweep_log.end(),
+                     [](const AicoSweepRecord& s) { return s.accepted; }));
+  // It ended on max_sweeps, not on non-finite values, and used to be simulated as the transfer.
+  check_not_planned(r, TransferMethod::topological, "the plan failed before any progress");
+  CHECK_THAT(r.reason, Catch::Contains("max_sweeps"));
 }

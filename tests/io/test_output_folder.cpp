@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <stdlib.h>  // mkdtemp
 #include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <csignal>
 #include <filesystem>
@@ -13,10 +15,28 @@
 #include <topograsp/io/detail/svg_text.hpp>
 #include <topograsp/io/output_folder.hpp>
 
+#include "support/throws.hpp"
+
 using namespace topograsp;
 namespace fs = std::filesystem;
 
 namespace {
+
+// The id of a process of this host that has ended (a child that exited and was reaped).
+pid_t ended_process() {
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  REQUIRE(child > 0);
+  int status = 0;
+  REQUIRE(::waitpid(child, &status, 0) == child);
+  return child;
+}
+
+// The name of a staging folder of process \p pid on this host.
+std::string staging_name_of(pid_t pid) {
+  return std::string(output_staging_prefix) + detail::staging_host_name() + "-" +
+         std::to_string(static_cast<long long>(pid)) + "-0000000000000000-0";
+}
 
 // A temporary directory removed at the end of the scope.
 struct ScratchDir {
@@ -162,7 +182,7 @@ TEST_CASE("an output folder is staged and committed, results.json last", "[io][o
     CHECK(listing(dir / "scenes").size() == 2);
   }
   SECTION("the staging folder of an interrupted run is removed by the next run") {
-    const fs::path leftover = dir / (std::string(output_staging_prefix) + "12345");
+    const fs::path leftover = dir / staging_name_of(ended_process());
     put(leftover / "scenes" / "hammer_9_human.xml", "interrupted");
     CHECK(slurp(dir / "results.json") == results_text("one"));  // the previous run still there
     OutputFolder out(dir);
@@ -173,7 +193,33 @@ TEST_CASE("an output folder is staged and committed, results.json last", "[io][o
     CHECK_FALSE(fs::exists(out.staging()));
     // Nothing staged: the run owns results.json, scenes, figures and index.html, now gone.
     CHECK(listing(dir).empty());
-    CHECK_THROWS_WITH(out.commit(), Catch::StartsWith("commit: the run is committed already"));
+    CHECK_THROWS_WITH(out.commit(), Catch::StartsWith("commit: commit() was called already"));
+  }
+  SECTION("an interrupted commit (scenes, no results.json) is still recognised as a run") {
+    fs::remove(dir / "results.json");
+    put(dir / staging_name_of(ended_process()) / "results.json", results_text("two"));
+    OutputFolder out(dir);  // no --force needed: the staging folder proves grasp_transfer wrote
+    put(out.staging() / "scenes" / "bottle_3_human.xml", "three");
+    detail::write_text_file(out.staging() / "results.json", results_text("three"));
+    out.commit();
+    CHECK(listing(dir) == std::vector<std::string>{"results.json", "scenes"});
+  }
+  SECTION("a staging folder of a run still going is never removed without --force") {
+    // This process is running: its staging folder stands for a concurrent run (a shard given
+    // the same --out), which another run must not delete.
+    const fs::path live = dir / staging_name_of(::getpid());
+    put(live / "scenes" / "x.xml", "live");
+    test::check_throws_naming([&] { OutputFolder out(dir); }, "dir");
+    CHECK_THROWS_WITH(OutputFolder(dir),
+                      Catch::Contains("still going") && Catch::Contains("its own output folder"));
+    CHECK(fs::exists(live / "scenes" / "x.xml"));
+    // Another host's staging folder: its process cannot be checked from here.
+    const fs::path remote = dir / (std::string(output_staging_prefix) + "otherhost-1-x");
+    fs::remove_all(live);
+    put(remote / "a", "remote");
+    CHECK_THROWS_AS(OutputFolder(dir), invalid_argument);
+    OutputFolder forced(dir, true);
+    CHECK_FALSE(fs::exists(remote));
   }
 }
 

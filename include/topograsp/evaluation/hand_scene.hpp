@@ -192,19 +192,28 @@ class HandScene {
   /// Forward kinematics at the current targets (hand frame).
   [[nodiscard]] const KinematicsData<M>& kinematics() const noexcept { return kin_; }
 
- private:
-  static void require_hand_pose(const Eigen::Isometry3d& pose, std::string_view argument) {
-    require_finite(pose.matrix(), argument);
+  /// What is wrong with \p pose as a hand pose ("" if nothing): not finite, not a rotation
+  /// (orthonormal, det +1, to 1e-6), or a coordinate above k_max_hand_coordinate. The one check
+  /// behind the constructor and set_hand_pose, for callers that report instead of throwing.
+  [[nodiscard]] static std::string hand_pose_problem(const Eigen::Isometry3d& pose) {
+    if (!pose.matrix().allFinite()) return "expected a finite number";
     const Mat3 R = pose.linear();
     if (!(R.transpose() * R).isApprox(Mat3::Identity(), 1e-6) || R.determinant() < 0.0)
-      detail::throw_invalid_argument(argument, "expected a rotation (orthonormal, det +1)");
+      return "expected a rotation (orthonormal, det +1)";
     const double m = pose.translation().cwiseAbs().maxCoeff();
     if (!(m <= k_max_hand_coordinate)) {
-      char buf[32];
-      std::snprintf(buf, sizeof buf, "%.6g", m);
-      detail::throw_invalid_argument(
-          argument, std::string("expected coordinates of at most 1e6 m, got ") + buf + " m");
+      char buf[96];
+      static_assert(k_max_hand_coordinate == 1e6, "the message below says 1e6");
+      std::snprintf(buf, sizeof buf, "expected coordinates of at most 1e6 m, got %.6g m", m);
+      return buf;
     }
+    return {};
+  }
+
+ private:
+  static void require_hand_pose(const Eigen::Isometry3d& pose, std::string_view argument) {
+    const std::string problem = hand_pose_problem(pose);
+    if (!problem.empty()) detail::throw_invalid_argument(argument, problem);
   }
 
   World<S> world_;

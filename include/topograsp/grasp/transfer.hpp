@@ -181,21 +181,21 @@ inline std::string parameter_range(const TransferParameter& p) {
   std::snprintf(b, sizeof b, "[%g, %g]", p.min, p.max);
   return b;
 }
-// Throws naming "value" unless v is in p's range (NaN is not).
+// Throws naming the parameter unless v is in p's range (NaN is not).
 inline void check_parameter_value(const TransferParameter& p, double v) {
   if (!(v >= p.min && v <= p.max)) {
     char got[32];
     std::snprintf(got, sizeof got, "%g", v);
-    throw_invalid_argument("value", std::string(p.name) + " must be in " + parameter_range(p) +
-                                        " (" + std::string(p.meaning) + "), got " + got);
+    throw_invalid_argument(p.name, "must be in " + parameter_range(p) + " (" +
+                                       std::string(p.meaning) + "), got " + got);
   }
 }
 }  // namespace detail
 
 /// Sets the parameter called \p name (one of transfer_parameters) of \p options to \p value.
 /// \throws topograsp::invalid_argument naming "name" (unknown; the message lists the names) or
-/// "value" (outside the parameter's range, or not finite; the message names the parameter and
-/// its range); \p options is unchanged then.
+/// the parameter (\p value outside its range, or not finite; the message gives the range);
+/// \p options is unchanged then.
 inline void set_transfer_parameter(TransferOptions& options, std::string_view name, double value) {
   if (const TransferParameter* p = find_transfer_parameter(name)) {
     detail::check_parameter_value(*p, value);
@@ -210,7 +210,7 @@ inline void set_transfer_parameter(TransferOptions& options, std::string_view na
 }
 
 /// Checks every parameter of transfer_parameters in \p options against its range.
-/// \throws topograsp::invalid_argument naming "value" and the first parameter out of range.
+/// \throws topograsp::invalid_argument naming the first parameter out of range.
 inline void validate_transfer_parameters(const TransferOptions& options) {
   for (const TransferParameter& p : transfer_parameters)
     detail::check_parameter_value(p, options.*(p.field));
@@ -328,11 +328,9 @@ namespace detail {
 /// Why the SDH cannot be simulated at \p root with joints \p q (a non-finite or far pose, which
 /// HandScene refuses), or empty if it can.
 [[nodiscard]] inline std::string unusable_sdh_pose(const Eigen::Isometry3d& root, const Vec<7>& q) {
-  if (!root.matrix().allFinite() || !q.allFinite()) return "the hand pose is not finite";
-  if (!(root.translation().cwiseAbs().maxCoeff() <=
-        HandScene<models::schunk_sdh>::k_max_hand_coordinate))
-    return "the hand is placed farther than 1e6 m from the object";
-  return {};
+  if (!q.allFinite()) return "the hand's joints are not finite";
+  const std::string problem = HandScene<models::schunk_sdh>::hand_pose_problem(root);
+  return problem.empty() ? problem : "the hand pose cannot be simulated (" + problem + ")";
 }
 
 }  // namespace detail
@@ -482,6 +480,7 @@ inline constexpr double k_fingertip_max_error = 0.5;
   double lambda = 1e-3;
   Mat<22, 13> J = Mat<22, 13>::Zero();
   J.bottomRows<13>() = w * Mat<13, 13>::Identity();
+  bool progressed = false;  // a step was accepted: the fit left the transplant pose
   for (int it = 0; it < options.fingertip_iterations; ++it) {
     for (std::size_t k = 0; k < 3; ++k)
       J.middleRows<3>(3 * static_cast<int>(k)) = frame_position_jacobian(d, tips[k]);
@@ -491,6 +490,7 @@ inline constexpr double k_fingertip_max_error = 0.5;
     const double c = residual(trial, et);
     if (c < cost) {
       const bool settled = cost - c < 1e-12;
+      progressed = true;
       q = trial;
       e = et;
       cost = c;
@@ -500,6 +500,11 @@ inline constexpr double k_fingertip_max_error = 0.5;
       lambda *= 10.0;
       (void)residual(q, e);  // restore the kinematics of q
     }
+  }
+  if (!progressed) {
+    r.plan_ms = detail::ms_since(t0);
+    r.reason = "the fingertip fit accepted no step (the hand would stay at the transplant pose)";
+    return r;
   }
   forward_kinematics(d, q);
   double tip_error = 0.0;
@@ -521,7 +526,7 @@ inline constexpr double k_fingertip_max_error = 0.5;
   r.reason = detail::unusable_sdh_pose(fitted, q_hand);
   if (!r.reason.empty()) {
     r.plan_ms = detail::ms_since(t0);
-    r.reason = "the fitted " + r.reason.substr(4);  // "the hand ..." -> "the fitted hand ..."
+    r.reason = "fitted: " + r.reason;
     return r;
   }
   const auto root = place_at_contact(object, fitted, q_hand, fitted.linear().col(2), options.sim);
@@ -645,11 +650,11 @@ using TopologicalTaskSet =
     r.winding_plan.push_back(windings.task.value(d));
     r.winding_targets.push_back(windings.target.at(static_cast<int>(t), problem.steps()));
   }
-  // A plan that ended on non-finite values before accepting any sweep is the start held still:
-  // the method did no work (a NaN target, say); report it, never the ready pose as its result.
+  // A plan that accepted no sweep (whatever ended it: non-finite values, too many rejections) is
+  // the start held still: the method did no work; report it, never the ready pose as its result.
   const bool moved = std::any_of(plan.sweep_log.begin(), plan.sweep_log.end(),
                                  [](const AicoSweepRecord& s) { return s.accepted; });
-  if (plan.status == Status::numerical_issue && !moved) {
+  if (!moved) {
     r.reason = "the plan failed before any progress (" + r.reason + ")";
     return r;
   }

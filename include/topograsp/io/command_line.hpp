@@ -205,7 +205,7 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
         detail::throw_invalid_argument(arg,
                                        "expected NAME=VALUE, got " + detail::quote_argument(value));
       const std::string_view name = value.substr(0, eq);
-      // set_transfer_parameter's message ("name: ..." or "value: ..."), after the option.
+      // set_transfer_parameter's message ("name: ..." or "<parameter>: ..."), after the option.
       const auto set = [&](double v) {
         try {
           set_transfer_parameter(cli.experiment.transfer, name, v);
@@ -275,8 +275,9 @@ are removed even if this run writes none), and results.json is renamed into plac
 that fails or is interrupted before the commit leaves the previous run untouched (its staging
 folder is removed by the next run into DIR); a results.json always describes exactly the scenes
 beside it. DIR is checked before any work: a non-empty DIR without a results.json of
-grasp_transfer is refused unless --force; DIR/results.json and DIR/index.html must be files,
-DIR/scenes and DIR/figures folders. Other files in DIR are left alone.
+grasp_transfer is refused unless --force, and so is a DIR where another run is writing (give each
+--shard its own --out); DIR/results.json and DIR/index.html must be files, DIR/scenes and
+DIR/figures folders. Other files in DIR are left alone.
 
 exit status: 0 done; 2 bad arguments or an unusable output folder (nothing was computed);
 1 the run failed after it started (the previous run in DIR is untouched).

@@ -5,14 +5,18 @@
 ///
 /// The rule (docs/transfer.md): a run owns DIR/results.json, DIR/scenes/, DIR/figures/ and
 /// DIR/index.html and nothing else in DIR. Everything is written into
-/// DIR/.grasp_transfer-staging-<token>/ first; commit() then removes the old results.json,
-/// replaces scenes/, figures/ and index.html entirely (removing an earlier run's even where this
-/// run wrote none), and renames results.json into place last. A run that fails or is interrupted
-/// before the commit leaves the previous run untouched; its staging folder is removed by the next
-/// run into DIR.
+/// DIR/.grasp_transfer-staging-<host>-<pid>-<token>/ first; commit() then removes the old
+/// results.json, replaces scenes/, figures/ and index.html entirely (removing an earlier run's
+/// even where this run wrote none), and renames results.json into place last. A run that fails
+/// or is interrupted before the commit leaves the previous run untouched; its staging folder is
+/// removed by the next run into DIR on the same host once its process has ended. A staging folder
+/// of a process that is still running (or of another host) makes the next run refuse DIR without
+/// --force: two runs never write into one folder at the same time.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <charconv>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -23,8 +27,14 @@
 #include <utility>
 #include <vector>
 
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
+
 #include <topograsp/core/error.hpp>
 #include <topograsp/io/detail/svg_text.hpp>
+#include <topograsp/io/file_name.hpp>
 #include <topograsp/io/json.hpp>
 
 namespace topograsp {
@@ -35,6 +45,37 @@ inline constexpr std::string_view results_generator = "topograsp grasp_transfer"
 
 /// The name prefix of the staging folders inside an output folder.
 inline constexpr std::string_view output_staging_prefix = ".grasp_transfer-staging-";
+
+namespace detail {
+
+// This host's name as the staging folders carry it (file_name_part; "host" if it cannot be read).
+inline std::string staging_host_name() {
+  char b[256] = {};
+  if (::gethostname(b, sizeof b - 1) != 0 || b[0] == '\0') return "host";
+  return file_name_part(b);
+}
+
+// The name of a new staging folder: prefix, host, process id, a unique token.
+inline std::string staging_folder_name() {
+  return std::string(output_staging_prefix) + staging_host_name() + "-" +
+         std::to_string(static_cast<long long>(::getpid())) + "-" + temporary_file_token();
+}
+
+// Whether the staging folder called \p name was left by a process of this host that has ended
+// (so it may be removed): false for a running process, another host, or a name not of this form.
+inline bool staging_folder_abandoned(std::string_view name) {
+  name.remove_prefix(std::min(name.size(), output_staging_prefix.size()));
+  const std::string host = staging_host_name() + "-";
+  if (!name.starts_with(host)) return false;
+  name.remove_prefix(host.size());
+  long long pid = 0;
+  const auto [end, ec] = std::from_chars(name.data(), name.data() + name.size(), pid);
+  if (ec != std::errc() || end == name.data() || pid <= 0 || *end != '-') return false;
+  if (pid == static_cast<long long>(::getpid())) return false;
+  return ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
+}
+
+}  // namespace detail
 
 /// Whether the file \p path is a results.json written by grasp_transfer: a JSON object whose
 /// "generator" is results_generator, or, from versions before that mark, a JSON object without a
@@ -73,14 +114,18 @@ class OutputFolder {
       {"index.html", false},
   }};
 
-  /// Checks \p dir before any work and creates DIR/.grasp_transfer-staging-<token>/ in it:
-  /// DIR is created if missing; leftover staging folders of interrupted runs are removed.
+  /// Checks \p dir before any work and creates DIR/.grasp_transfer-staging-<host>-<pid>-<token>/
+  /// in it: DIR is created if missing; staging folders left by ended processes of this host
+  /// (interrupted runs) are removed.
   /// \throws topograsp::invalid_argument naming \p argument ("dir" by default; grasp_transfer
   /// passes "--out") if \p dir is empty, exists but is not a folder, cannot be created or written,
   /// if DIR/results.json or DIR/index.html exists and is not a regular file, DIR/scenes or
-  /// DIR/figures exists and is not a folder, or if DIR holds anything but leftover staging folders
-  /// and has no results.json written by grasp_transfer (is_grasp_transfer_results), unless
-  /// \p force. Nothing in DIR is changed then, except that DIR may have been created.
+  /// DIR/figures exists and is not a folder, unless \p force: if DIR holds a staging folder of a
+  /// run still going (or of another host), or if DIR holds anything but staging folders and
+  /// neither a results.json written by grasp_transfer (is_grasp_transfer_results) nor a staging
+  /// folder of an interrupted run (which proves that grasp_transfer wrote there: an interrupted
+  /// commit leaves scenes/ without results.json). Nothing in DIR is changed then, except that DIR
+  /// may have been created. With \p force every staging folder is removed.
   explicit OutputFolder(std::filesystem::path dir, bool force = false,
                         std::string_view argument = "dir")
       : dir_(std::move(dir)) {
@@ -112,17 +157,25 @@ class OutputFolder {
     }
     bool foreign = false;
     std::vector<fs::path> leftovers;
+    std::string live;  // a staging folder of a run that may still be going
     fs::directory_iterator it(dir_, ec);
     if (ec) refuse("cannot read the folder " + shown + " (" + ec.message() + ")");
     for (; it != fs::directory_iterator(); it.increment(ec)) {
       const std::string name = it->path().filename().string();
-      if (name.starts_with(output_staging_prefix))
-        leftovers.push_back(it->path());
-      else
+      if (!name.starts_with(output_staging_prefix)) {
         foreign = true;
+        continue;
+      }
+      leftovers.push_back(it->path());
+      if (!detail::staging_folder_abandoned(name)) live = name;
     }
     if (ec) refuse("cannot read the folder " + shown + " (" + ec.message() + ")");
-    if (foreign && !force && !is_grasp_transfer_results(dir_ / "results.json"))
+    if (!live.empty() && !force)
+      refuse(shown + " holds \"" + live +
+             "\", the staging folder of a run that is still going or ran on another host; give "
+             "each run (each shard) its own output folder, or use --force if no other run "
+             "writes there");
+    if (foreign && !force && leftovers.empty() && !is_grasp_transfer_results(dir_ / "results.json"))
       refuse(shown +
              " is not empty and holds no results.json of grasp_transfer; use --force "
              "to write into it: the run then replaces results.json, scenes/, figures/ and "
@@ -133,7 +186,7 @@ class OutputFolder {
         refuse("cannot remove the leftover staging folder \"" + p.string() + "\" (" + ec.message() +
                ")");
     }
-    staging_ = dir_ / (std::string(output_staging_prefix) + detail::temporary_file_token());
+    staging_ = dir_ / detail::staging_folder_name();
     fs::create_directory(staging_, ec);
     if (ec) refuse("cannot write into " + shown + " (" + ec.message() + ")");
     try {
@@ -148,9 +201,11 @@ class OutputFolder {
   OutputFolder(const OutputFolder&) = delete;
   OutputFolder& operator=(const OutputFolder&) = delete;
 
-  /// Removes the staging folder if the run was not committed.
+  /// Removes the staging folder if commit() was never called. After a commit() that failed part
+  /// way the staging folder stays: it holds the new run (the message of commit()'s exception
+  /// says where).
   ~OutputFolder() {
-    if (committed_) return;
+    if (committing_) return;
     std::error_code ec;
     std::filesystem::remove_all(staging_, ec);
   }
@@ -161,6 +216,8 @@ class OutputFolder {
   [[nodiscard]] const std::filesystem::path& staging() const noexcept { return staging_; }
   /// Whether commit() has succeeded.
   [[nodiscard]] bool committed() const noexcept { return committed_; }
+  /// Whether commit() was called (it may have failed part way; then DIR has no results.json).
+  [[nodiscard]] bool commit_started() const noexcept { return committing_; }
 
   /// Puts the staged run in place: removes DIR/results.json, replaces DIR/scenes, DIR/figures and
   /// DIR/index.html by the staged ones (or removes them if none was staged), renames the staged
@@ -170,7 +227,8 @@ class OutputFolder {
   /// cannot be removed or moved (the message names it); DIR then has no results.json.
   void commit() {
     namespace fs = std::filesystem;
-    if (committed_) detail::throw_invalid_argument("commit", "the run is committed already");
+    if (committing_) detail::throw_invalid_argument("commit", "commit() was called already");
+    committing_ = true;
     std::error_code ec;
     const auto check = [&](const char* what, const fs::path& p) {
       if (ec)
@@ -201,6 +259,7 @@ class OutputFolder {
   std::filesystem::path dir_;
   std::filesystem::path staging_;
   bool committed_ = false;
+  bool committing_ = false;  // commit() was called
 };
 
 }  // namespace topograsp

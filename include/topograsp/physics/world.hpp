@@ -87,8 +87,9 @@ class World {
   }
 
   /// An empty world. Throws topograsp::invalid_argument naming the option if one is out of range:
-  /// a non-positive time step or one whose sub-step (time_step / substeps, in S) is below
-  /// min_length() (1e-203 s is 0 in float: the step divided by it), fewer than 1 or more than 1000
+  /// a non-positive time step, one the scalar type cannot hold (1e291 s is inf in float), or one
+  /// whose sub-step (time_step / substeps, in S) is below min_length() (1e-203 s is 0 in float: the
+  /// step divided by it), fewer than 1 or more than 1000
   /// sub-steps, a negative stiffness, a non-finite value, a max_speed above max_length(), or a time
   /// step too long for the speculative contacts to catch a body under gravity: |gravity| *
   /// time_step^2 must not exceed speculative_distance (a body released at rest moves g dt^2 in its
@@ -100,6 +101,10 @@ class World {
     if (options.substeps < 1 || options.substeps > 1000)
       detail::throw_invalid_argument("options.substeps",
                                      "expected 1 to 1000, got " + std::to_string(options.substeps));
+    if (!std::isfinite(static_cast<S>(options.time_step)))
+      detail::throw_invalid_argument(
+          "options.time_step",
+          "expected a step the scalar type can hold, got " + number(options.time_step) + " s");
     if (!(static_cast<S>(options.time_step) / static_cast<S>(options.substeps) >= min_length()))
       detail::throw_invalid_argument(
           "options.time_step",
