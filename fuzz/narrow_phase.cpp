@@ -11,7 +11,8 @@
 // - shapes with d clearly above the margin get no contact;
 // - no contact claims a deeper overlap than d, within twice the polytope collider's preference
 //   for face axes (0.2 mm + 10 % of the depth), except where a sphere's or capsule's core is
-//   inside a box or cylinder and between two cylinders (see below);
+//   inside a box or cylinder and for pairs with a cylinder, where signed_distance is not yet
+//   reliable for overlaps (see below);
 // - separated shapes (d > 0) get normals that point from A towards B (positive along d's normal),
 //   except for a cylinder's prism against a box or prism, whose faces differ from the cylinder.
 
@@ -118,8 +119,12 @@ void run(const Shape& a, const Shape& b, double margin, const std::string& input
           ? (topograsp::detail::is_rounded(a.type) ? a.size[0] : b.size[0])
           : 0.0;
   const bool core_inside = round > 0.0 && d < -round;
-  // Two prisms skip their cap-edge by cap-edge axes (collide_polytopes.hpp): not compared either.
-  const bool both_prisms = a.type == ShapeType::cylinder && b.type == ShapeType::cylinder;
+  // With a cylinder the oracle itself is unreliable for overlaps: signed_distance's EPA often
+  // fails on a box or cylinder against a cylinder (it then reports a depth of 0) or stops short
+  // of the depth (fuzz/open/narrow_phase/, docs/testing.md, an open finding). Until that is fixed
+  // the depths of pairs with a cylinder are not compared (this also covers two prisms, which skip
+  // their cap-edge by cap-edge axes in collide_polytopes.hpp).
+  const bool with_cylinder = a.type == ShapeType::cylinder || b.type == ShapeType::cylinder;
   // The polytope collider keeps a face axis unless an edge axis is better by 1e-4 m + 5 % of the
   // depth (for stable face contacts): twice that is allowed.
   const double depth_slack = tol + 2e-4 + 0.1 * std::abs(d);
@@ -145,7 +150,7 @@ void run(const Shape& a, const Shape& b, double margin, const std::string& input
     const double sep = static_cast<double>(c.separation);
     if (!(sep <= margin + tol))
       fuzz_fail("narrow_phase", which + "separation above the margin", info);
-    if (!core_inside && !both_prisms && !(sep >= d - depth_slack))
+    if (!core_inside && !with_cylinder && !(sep >= d - depth_slack))
       fuzz_fail("narrow_phase", which + "deeper than the shapes' overlap " + num(d), info);
     if (d > tol && !polytope_prism && !(c.normal.template cast<double>().dot(exact.normal) > 0.0))
       fuzz_fail("narrow_phase", which + "normal points from B towards A", info);

@@ -256,3 +256,21 @@ TEST_CASE("signed_distance of boxes with coinciding centres and faces is their o
   e.p += 0.5 * a.R.col(2);
   CHECK(signed_distance(a, e).distance == Approx(-0.002).margin(1e-6));
 }
+
+TEST_CASE("a flat GJK simplex through the origin still gives the overlap's depth",
+          "[geometry][signed_distance]") {
+  // Found by fuzz_narrow_phase (fuzz/regressions/narrow_phase/epa_flat_simplex_zero_depth): a
+  // 2 mm cube inside a 2 mm x 2 mm x 3 m bar, same centre, axes permuted; GJK ended on a triangle
+  // along the bar's diagonal, EPA's tetrahedron missed the origin, and the distance was 0.
+  Primitive a, b;
+  a.type = b.type = ShapeType::box;
+  a.size = Vec3(0.001, 0.0010000000004173116, 1.5218078431372548);
+  a.p = Vec3(-3, -2.9999999999562803, -3);
+  a.R << 0, 0, 1, 1, 0, 0, 0, 1, 0;
+  b.size = Vec3(0.001, 0.001, 0.001);
+  b.p = Vec3(-3, -3, -3);
+  const double e1 = -6.8967054289714724e-13, e2 = 6.8961503174591599e-13;
+  b.R << e1, e2, 1, 1, e1, e2, e2, 1, e1;
+  CHECK(signed_distance(a, b).distance == Approx(-0.002).margin(1e-9));
+  CHECK(signed_distance(b, a).distance == Approx(-0.002).margin(1e-9));
+}
