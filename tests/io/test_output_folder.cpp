@@ -89,7 +89,10 @@ void run_into(const fs::path& dir, const std::string& run, std::vector<std::stri
     put(out.staging() / "index.html", run);
   }
   detail::write_text_file(out.staging() / "results.json", results_text(run));
+  CHECK_FALSE(out.commit_started());
   out.commit();
+  CHECK(out.commit_started());
+  CHECK(out.committed());
 }
 
 }  // namespace
