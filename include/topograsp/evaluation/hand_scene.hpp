@@ -4,6 +4,7 @@
 /// kinematics of joint targets, and an object made of shapes as a dynamic body.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <span>
@@ -170,6 +171,39 @@ class HandScene {
           sum += static_cast<double>(m.points[static_cast<std::size_t>(k)].step_impulse);
     return sum / world_.options().time_step;
   }
+
+  /// The deepest hand-object overlap at the last step (m, >= 0; 0 when nothing overlaps).
+  [[nodiscard]] double deepest_penetration() const noexcept {
+    double deepest = 0.0;
+    for (const Manifold<S>& m : world_.manifolds())
+      if (m.body_b == object_ || m.body_a == object_)
+        for (int k = 0; k < m.count; ++k)
+          deepest = std::max(
+              deepest, -static_cast<double>(m.points[static_cast<std::size_t>(k)].separation));
+    return deepest;
+  }
+  /// Gravity in the world frame (m/s^2).
+  [[nodiscard]] Vec3 gravity() const noexcept { return world_.gravity().template cast<double>(); }
+  /// Sets gravity in the world frame (m/s^2); throws as World::set_gravity().
+  void set_gravity(const Vec3& g) { world_.set_gravity(g); }
+  /// The object's mass (kg).
+  [[nodiscard]] double object_mass() const noexcept {
+    return static_cast<double>(world_.body(object_).mass);
+  }
+  /// The object's centre of mass in the world (m).
+  [[nodiscard]] Vec3 object_com() const noexcept {
+    return world_.body(object_).x.template cast<double>();
+  }
+  /// The palm centre in the world (m): the model's palm point, or the hand frame's origin for a
+  /// model without a hand.
+  [[nodiscard]] Vec3 palm_centre() const noexcept {
+    if constexpr (M.is_hand())
+      return hand_pose_ * world_point(kin_, M.palm);
+    else
+      return hand_pose_.translation();
+  }
+  /// The time step (s).
+  [[nodiscard]] double time_step() const noexcept { return world_.options().time_step; }
 
   /// The object frame in the world.
   [[nodiscard]] Eigen::Isometry3d object_pose() const noexcept {

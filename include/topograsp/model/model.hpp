@@ -210,7 +210,13 @@ template <std::size_t NL, std::size_t NS, std::size_t NF, std::size_t NH>
       l.parent = detail::index_of(links, s.parent, i);
       if (l.parent < 0) detail::model_error("parent is not an earlier link");
     }
+    if (!(s.mass >= 0.0 && s.mass < 1e6))
+      detail::model_error("link mass must be finite and >= 0 (kg)");
+    for (double c : s.com)
+      if (!(c == c) || cmath::abs(c) > 1e6) detail::model_error("link com must be finite (m)");
     if (s.type == JointType::fixed) {
+      if (s.effort != 0.0 || s.velocity != 0.0 || s.armature != 0.0)
+        detail::model_error("a fixed joint has no actuator");
       if (!s.mimic.empty()) detail::model_error("a fixed joint cannot mimic");
       continue;
     }
@@ -221,6 +227,11 @@ template <std::size_t NL, std::size_t NS, std::size_t NF, std::size_t NH>
     for (std::size_t k = 0; k < 3; ++k)
       if (cmath::abs(l.axis[k]) == 1.0) l.axis_kind = static_cast<AxisKind>(k);
     if (s.lower > s.upper) detail::model_error("lower limit above upper limit");
+    if (!(s.effort >= 0.0 && s.effort < 1e9 && s.velocity >= 0.0 && s.velocity < 1e9 &&
+          s.armature >= 0.0 && s.armature < 1e9))
+      detail::model_error("effort, velocity and armature must be in [0, 1e9)");
+    if (!s.mimic.empty() && (s.effort != 0.0 || s.velocity != 0.0 || s.armature != 0.0))
+      detail::model_error("a mimic joint has no actuator of its own (give its source one)");
     if (s.closing != 0.0 && s.closing != 1.0 && s.closing != -1.0)
       detail::model_error("closing direction must be +1, -1 or 0");
     if (s.mimic.empty()) {

@@ -37,6 +37,19 @@ struct LinkSpec {
   double offset = 0.0;      ///< only for mimic joints
   double closing =
       0.0;  ///< +1: increasing the value closes the hand, -1: decreasing does, 0: neither
+  /// The joint's actuator (actuated joints only; a mimic joint is driven through its source):
+  /// the largest torque (N m, revolute) or force (N, prismatic) it gives; 0 if not given, and
+  /// then the joint cannot be simulated with motors (HandScene says so).
+  double effort = 0.0;
+  /// The actuator's speed limit (rad/s or m/s); 0 if not given.
+  double velocity = 0.0;
+  /// The actuator's reflected rotor inertia (kg m^2 or kg), added to the joint's inertia as
+  /// MuJoCo's joint `armature` is; 0 if not given.
+  double armature = 0.0;
+  /// The link's mass (kg); 0 if not given (a massless link).
+  double mass = 0.0;
+  /// The link's centre of mass in the link frame (m).
+  std::array<double, 3> com{0.0, 0.0, 0.0};
 
   /// This joint with its closing direction set (+1, -1 or 0).
   [[nodiscard]] constexpr LinkSpec closes(double direction) const noexcept {
@@ -44,6 +57,25 @@ struct LinkSpec {
     out.closing = direction;
     return out;
   }
+  /// This joint driven by an actuator of at most \p max_effort (N m or N), at most
+  /// \p max_velocity (rad/s or m/s), with reflected rotor inertia \p rotor_inertia.
+  [[nodiscard]] constexpr LinkSpec actuator(double max_effort, double max_velocity,
+                                            double rotor_inertia = 0.0) const noexcept {
+    LinkSpec out = *this;
+    out.effort = max_effort;
+    out.velocity = max_velocity;
+    out.armature = rotor_inertia;
+    return out;
+  }
+  /// This link with mass \p link_mass (kg) whose centre is at \p centre (link frame, m).
+  [[nodiscard]] constexpr LinkSpec inertial(double link_mass,
+                                            std::array<double, 3> centre) const noexcept {
+    LinkSpec out = *this;
+    out.mass = link_mass;
+    out.com = centre;
+    return out;
+  }
+
   /// This joint driven by joint \p source: value = multiplier * value(source) + offset.
   [[nodiscard]] constexpr LinkSpec mimics(Name source, double mult = 1.0,
                                           double off = 0.0) const noexcept {
