@@ -113,37 +113,62 @@ template <class S = double>
 /// \p density (kg/m^3, \p mass <= 0) or a total \p mass (kg, then density only sets the ratio
 /// between shapes and any positive value gives the same result; for shapes so large or small
 /// that density 1 overflows, the computation is done at a size scaled by a power of two).
-/// Overlapping shapes count twice. The result may still be out of the range of S (a density of
-/// water on a 1e120 m sphere); the World checks it (World::add_body()). Throws
-/// topograsp::invalid_argument for an empty shape list, a bad shape, or when neither a positive
-/// finite mass nor a positive finite density is given.
+/// \p shape_density, if not empty, gives each shape its own density (kg/m^3, one per shape, in
+/// place of \p density): with a positive \p mass only their ratios matter (they share the mass
+/// out), with \p mass 0 they give it. Overlapping shapes count twice. The result may still be out
+/// of the range of S (a density of water on a 1e120 m sphere); the World checks it
+/// (World::add_body()). Throws topograsp::invalid_argument for an empty shape list, a bad shape,
+/// a \p shape_density whose size is not the number of shapes ("shape_density") or with an entry
+/// that is not positive and finite ("shape_density[i]"), or when neither a positive finite mass
+/// nor a positive finite density (nor shape densities) is given.
 template <class S = double>
 [[nodiscard]] MassProperties<S> body_mass_properties(std::span<const ShapeSpec> shapes, double mass,
-                                                     double density) {
+                                                     double density,
+                                                     std::span<const double> shape_density = {}) {
   using detail::M3;
   using detail::V3;
   if (shapes.empty()) detail::throw_invalid_argument("shapes", "expected at least one shape");
   for (std::size_t i = 0; i < shapes.size(); ++i)
     require_valid_shape(shapes[i], "shapes[" + std::to_string(i) + "]");
+  const bool per_shape = !shape_density.empty();
+  if (per_shape) {
+    if (shape_density.size() != shapes.size())
+      detail::throw_invalid_argument(
+          "shape_density", "expected one density per shape (" + std::to_string(shapes.size()) +
+                               "), got " + std::to_string(shape_density.size()));
+    for (std::size_t i = 0; i < shape_density.size(); ++i)
+      require_positive(shape_density[i], "shape_density[" + std::to_string(i) + "]");
+  }
+  // With a given mass only the ratio of the densities matters: scale them so that the largest
+  // is 1, which keeps the sums below in range as a uniform density of 1 does.
+  double rho_scale = 1.0;
   if (mass > 0.0 || !std::isfinite(mass)) {
     require_positive(mass, "mass");
     density = 1.0;
+    if (per_shape) rho_scale = 1.0 / *std::max_element(shape_density.begin(), shape_density.end());
   } else if (mass == 0.0) {
-    require_positive(density, "density");
+    if (per_shape)
+      density = 1.0;  // the shape densities are the densities
+    else
+      require_positive(density, "density");
   } else {
     require_positive(mass, "mass");
   }
-  const auto sum = [](std::span<const ShapeSpec> parts, double rho) {
+  const auto sum = [&](std::span<const ShapeSpec> parts, double rho) {
+    const auto rho_of = [&](std::size_t i) {
+      return per_shape ? shape_density[i] * rho_scale * rho : rho;
+    };
     MassProperties<S> t;
     V3<S> moment = V3<S>::Zero();
-    for (const ShapeSpec& s : parts) {
-      const MassProperties<S> p = shape_mass_properties<S>(s, rho);
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      const MassProperties<S> p = shape_mass_properties<S>(parts[i], rho_of(i));
       t.mass += p.mass;
       moment += p.mass * p.com;
     }
     t.com = moment / t.mass;
-    for (const ShapeSpec& s : parts) {
-      const MassProperties<S> p = shape_mass_properties<S>(s, rho);
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      const ShapeSpec& s = parts[i];
+      const MassProperties<S> p = shape_mass_properties<S>(s, rho_of(i));
       const V3<S> d = p.com - t.com;
       // Parallel-axis theorem: I_c + m (|d|^2 1 - d d^T).
       t.inertia += p.inertia + p.mass * (d.squaredNorm() * M3<S>::Identity() - d * d.transpose());

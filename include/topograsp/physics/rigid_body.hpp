@@ -31,6 +31,10 @@ struct BodyDesc {
   double mass = 0.0;
   /// Density (kg/m^3) of a dynamic body when mass is 0. Default: water.
   double density = 1000.0;
+  /// Per-shape densities (kg/m^3), one per shape, for a body of several materials (a hammer's
+  /// steel head and wooden handle); empty = every shape has `density`. With a given mass they
+  /// set how the mass is shared between the shapes; with mass 0 they give it. Copied by add_body().
+  std::span<const double> shape_density{};
   /// Coulomb friction coefficient; a pair of bodies uses sqrt(mu_a mu_b). Default 0.5.
   double friction = 0.5;
 };

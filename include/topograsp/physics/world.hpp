@@ -161,15 +161,27 @@ class World {
     const V3 p0 = detail::translation_of<S>(desc.pose);
     b.q = detail::Quat<S>(R0).normalized();
     b.R = b.q.toRotationMatrix();
+    if (!desc.shape_density.empty()) {
+      if (desc.shape_density.size() != desc.shapes.size())
+        detail::throw_invalid_argument("desc.shape_density",
+                                       "expected one density per shape (" +
+                                           std::to_string(desc.shapes.size()) + "), got " +
+                                           std::to_string(desc.shape_density.size()));
+      for (std::size_t i = 0; i < desc.shape_density.size(); ++i)
+        require_positive(desc.shape_density[i], "desc.shape_density[" + std::to_string(i) + "]");
+    }
     if (desc.type == BodyType::dynamic) {
-      const MassProperties<S> mp = body_mass_properties<S>(desc.shapes, desc.mass, desc.density);
+      const MassProperties<S> mp =
+          body_mass_properties<S>(desc.shapes, desc.mass, desc.density, desc.shape_density);
       b.mass = mp.mass;
       b.inv_mass = S(1) / mp.mass;
       b.local_com = mp.com;
       b.inertia = mp.inertia;
       b.inv_inertia_local = inverse_in_range(mp.inertia);
       b.inv_inertia = b.R * b.inv_inertia_local * b.R.transpose();
-      require_representable_mass(b, desc.mass > 0.0 ? "desc.mass" : "desc.density");
+      require_representable_mass(b, desc.mass > 0.0              ? "desc.mass"
+                                    : desc.shape_density.empty() ? "desc.density"
+                                                                 : "desc.shape_density");
     }
     b.x = p0 + b.R * b.local_com;
     b.first_collider = static_cast<int>(colliders_.size());
@@ -225,6 +237,36 @@ class World {
         }
     }
     return index;
+  }
+
+  /// Sets the Coulomb friction coefficient of the contact slot between shapes \p collider_a and
+  /// \p collider_b (either order; collider indices, see collider()) to \p mu, in place of the
+  /// sqrt(mu_a mu_b) of their bodies that add_body() gave it: friction per pair of materials.
+  /// Other pairs keep theirs. Allocates nothing. Throws topograsp::invalid_argument naming
+  /// "collider_a" or "collider_b" for an index out of range, "collider_b" for two shapes with no
+  /// contact slot (the same body, or two bodies neither of which is dynamic), and "mu" for a value
+  /// that is negative, not finite or above 1e6.
+  void set_pair_friction(int collider_a, int collider_b, double mu) {
+    if (collider_a < 0 || collider_a >= collider_count())
+      detail::throw_invalid_argument("collider_a", "expected a collider index in [0, " +
+                                                       std::to_string(collider_count()) +
+                                                       "), got " + std::to_string(collider_a));
+    if (collider_b < 0 || collider_b >= collider_count())
+      detail::throw_invalid_argument("collider_b", "expected a collider index in [0, " +
+                                                       std::to_string(collider_count()) +
+                                                       "), got " + std::to_string(collider_b));
+    require_non_negative(mu, "mu");
+    if (mu > 1e6) detail::throw_invalid_argument("mu", "expected at most 1e6, got " + number(mu));
+    for (Manifold<S>& m : manifolds_)
+      if ((m.collider_a == collider_a && m.collider_b == collider_b) ||
+          (m.collider_a == collider_b && m.collider_b == collider_a)) {
+        m.friction = static_cast<S>(mu);
+        return;
+      }
+    detail::throw_invalid_argument(
+        "collider_b", "shapes " + std::to_string(collider_a) + " and " +
+                          std::to_string(collider_b) +
+                          " have no contact slot (the same body, or no dynamic body between them)");
   }
 
   /// Sets the pose that kinematic body \p body reaches at the end of the next step (its body
