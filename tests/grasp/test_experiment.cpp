@@ -102,8 +102,9 @@ TEST_CASE("a small experiment: counts, schema and determinism", "[grasp][experim
 TEST_CASE("each method on a hand-picked hammer grasp", "[grasp][transfer]") {
   const GraspObject hammer = objects::hammer();
   const auto hyps = box_hypotheses(hammer);
-  // A power grasp of the handle near the head: the palm under the handle, fingers across it.
-  const HumanGrasp g = demonstrate(hammer, hyps[26], 26);
+  // A power grasp that wraps the hammer (its largest winding above 0.5 turns about the centre of
+  // mass, which the steel head pulls to 0.117 m along the handle).
+  const HumanGrasp g = demonstrate(hammer, hyps[47], 47);
   REQUIRE(g.stable());
   CHECK(g.descriptor.values[0] >= g.descriptor.values[1]);
   CHECK(g.descriptor.values[0] > 0.5);  // the hand wraps the handle
@@ -128,10 +129,10 @@ TEST_CASE("each method on a hand-picked hammer grasp", "[grasp][transfer]") {
 }
 
 TEST_CASE("the line task keeps the SDH on the part the human held", "[grasp][transfer]") {
-  // The end of the hammer's handle, 12 cm from the centre of mass: small human windings, which
-  // the planner could also reach by backing the hand away or sliding it off the handle.
+  // A grasp of the handle away from the centre of mass (near the head): small human windings,
+  // which the planner could also reach by backing the hand away or sliding it off the handle.
   const GraspObject hammer = objects::hammer();
-  const HumanGrasp g = demonstrate(hammer, box_hypotheses(hammer)[0], 0);
+  const HumanGrasp g = demonstrate(hammer, box_hypotheses(hammer)[22], 22);
   REQUIRE(g.stable());
   CHECK(g.descriptor.values[0] < 0.35);
   const Eigen::Isometry3d human = detail::sdh_grasp_target(g);
@@ -152,7 +153,7 @@ TEST_CASE("the line task keeps the SDH on the part the human held", "[grasp][tra
 
 TEST_CASE("the windings can be taken around the point nearest the human's grasp", "[grasp]") {
   const GraspObject hammer = objects::hammer();
-  const HumanGrasp g = demonstrate(hammer, box_hypotheses(hammer)[0], 0);  // the handle's end
+  const HumanGrasp g = demonstrate(hammer, box_hypotheses(hammer)[22], 22);  // on the handle
   REQUIRE(g.stable());
   const Vec3 com = hammer.centre_of_mass();
   CHECK(winding_reference_point(hammer, g, WindingReference::centre_of_mass) == com);
@@ -195,6 +196,9 @@ TEST_CASE("bad experiment input is rejected by name", "[grasp][bad-input]") {
   c = small_options(1);
   c.objects[0].mass = -1.0;
   CHECK_THROWS_WITH(run_experiment(c), Catch::Contains("hammer.mass"));
+  c = small_options(1);
+  c.transfer.sim.friction = -0.5;
+  CHECK_THROWS_WITH(run_experiment(c), Catch::Contains("transfer.sim.friction"));
 }
 
 TEST_CASE("transfer parameters are set and recorded by name", "[grasp][bad-input]") {

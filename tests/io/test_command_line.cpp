@@ -85,6 +85,13 @@ TEST_CASE("the command line's defaults and values", "[io][command_line]") {
   CHECK(parse({"--jobs", "2", "-h"}).help);
 }
 
+TEST_CASE("--friction sets one coefficient for every pair; the default is the table",
+          "[io][command_line]") {
+  CHECK(parse({}).experiment.transfer.sim.friction == 0.0);
+  CHECK(parse({"--friction", "0.3"}).experiment.transfer.sim.friction == 0.3);
+  CHECK(parse({"--friction", "10"}).experiment.transfer.sim.friction == 10.0);
+}
+
 TEST_CASE("an option's value is never empty nor another option", "[io][command_line][bad-input]") {
   CHECK_THAT(error_of({"--out", ""}), Catch::StartsWith("--out: expected a value"));
   CHECK_THAT(error_of({"--out", "--jobs", "2"}),
@@ -92,7 +99,7 @@ TEST_CASE("an option's value is never empty nor another option", "[io][command_l
   CHECK_THAT(error_of({"--out"}), Catch::StartsWith("--out: expected a value"));
   for (const std::string_view option :
        {"--objects", "--methods", "--out", "--jobs", "--seed", "--shard", "--max-hypotheses",
-        "--winding-reference", "--set"}) {
+        "--winding-reference", "--set", "--friction"}) {
     INFO(option);
     CHECK_THAT(error_of({option, ""}),
                Catch::StartsWith(std::string(option) + ": expected a value"));
@@ -138,6 +145,12 @@ TEST_CASE("numbers are checked whole and in range", "[io][command_line][bad-inpu
   CHECK_THAT(error_of({"--seed", "-1"}), Catch::StartsWith("--seed: expected a number"));
   CHECK_THAT(error_of({"--seed", "18446744073709551616"}), Catch::StartsWith("--seed: number out"));
   CHECK_THAT(error_of({"--max-hypotheses", "-1"}), Catch::StartsWith("--max-hypotheses: expected"));
+  for (const std::string_view mu : {"0", "-0.5", "10.5", "nan", "inf"}) {
+    INFO(mu);
+    CHECK_THAT(error_of({"--friction", mu}), Catch::StartsWith("--friction: "));
+  }
+  CHECK_THAT(error_of({"--friction", "0.5", "--friction", "0.3"}),
+             Catch::StartsWith("--friction: given twice"));
   for (const std::string_view s : {"4/3", "0/3", "1/0", "3", "/", "1/", "a/b", "-1/2"}) {
     INFO(s);
     CHECK_THAT(error_of({"--shard", s}), Catch::StartsWith("--shard: expected"));
@@ -192,9 +205,10 @@ TEST_CASE("every --set parameter is checked against its range before any work",
 
 TEST_CASE("the usage lists every option and every parameter with its range", "[io][command_line]") {
   const std::string usage = command_line_usage();
-  for (const char* option : {"--objects", "--methods", "--out", "--force", "--jobs", "--seed",
-                             "--shard", "--max-hypotheses", "--winding-reference", "--set",
-                             "--figures", "--quiet", "--help", "exit status", "results.json"}) {
+  for (const char* option :
+       {"--objects", "--methods", "--out", "--force", "--jobs", "--seed", "--shard",
+        "--max-hypotheses", "--winding-reference", "--set", "--friction", "--figures", "--quiet",
+        "--help", "exit status", "results.json"}) {
     INFO(option);
     CHECK(usage.find(option) != std::string::npos);
   }

@@ -24,6 +24,13 @@ struct ObjectSpec {
   Pose pose{};                    ///< the object frame in the world
   double mass = 0.0;              ///< kg; if 0 the mass comes from density
   double density = 0.0;           ///< kg/m^3, used when mass is 0
+  /// Density of each shape (kg/m^3), one per shape, for an object of several materials; empty =
+  /// uniform (density, or mass spread evenly). With a mass they share it out; without, they give
+  /// it.
+  std::vector<double> part_density{};
+  /// Coulomb friction coefficient of each shape against every hand link, one per shape; empty =
+  /// HandSceneOptions::friction for every pair.
+  std::vector<double> part_friction{};
 };
 
 /// The parameters of a HandScene beyond the stepper's.
@@ -51,8 +58,11 @@ class HandScene {
   /// the object. Throws topograsp::invalid_argument naming the argument for a non-finite or
   /// wrongly sized q, a bad pose (as set_hand_pose()), an object the World refuses (its ranges;
   /// named as the object's field, e.g. "object.mass", "object.shapes[0].size[0]"), an
-  /// object without shapes, a bad shape, a non-positive mass (or density when the mass is 0), or
-  /// bad options.
+  /// object without shapes, a bad shape, a non-positive mass (or density when the mass is 0 and
+  /// no part densities are given), a part_density or part_friction whose size is not the number
+  /// of shapes ("object.part_density", "object.part_friction") or with an entry that is not
+  /// positive and finite (part_density) or not in [0, 1e6] (part_friction), named with its index,
+  /// or bad options. part_friction is set on every pair of a hand link's shape and that part.
   HandScene(const Eigen::Isometry3d& hand_pose, const Config& q, const ObjectSpec& object,
             const HandSceneOptions& options = {})
       : world_(options.stepper), options_(options) {
@@ -61,9 +71,28 @@ class HandScene {
     require_positive(options.friction, "options.friction");
     if (object.shapes.empty())
       detail::throw_invalid_argument("object.shapes", "expected at least one shape");
+    const std::size_t n_parts = object.shapes.size();
+    const auto require_per_part = [n_parts](const std::vector<double>& v, const char* field) {
+      if (!v.empty() && v.size() != n_parts)
+        detail::throw_invalid_argument(std::string("object.") + field,
+                                       "expected one value per shape (" + std::to_string(n_parts) +
+                                           "), got " + std::to_string(v.size()));
+    };
+    require_per_part(object.part_density, "part_density");
+    require_per_part(object.part_friction, "part_friction");
+    for (std::size_t i = 0; i < object.part_density.size(); ++i)
+      require_positive(object.part_density[i], "object.part_density[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < object.part_friction.size(); ++i) {
+      const std::string name = "object.part_friction[" + std::to_string(i) + "]";
+      require_non_negative(object.part_friction[i], name);
+      if (object.part_friction[i] > 1e6)
+        detail::throw_invalid_argument(
+            name, "expected at most 1e6, got " + std::to_string(object.part_friction[i]));
+    }
     if (!(object.mass > 0.0)) {
       if (object.mass != 0.0) require_positive(object.mass, "object.mass");
-      require_positive(object.density, "object.density (the mass is 0)");
+      if (object.part_density.empty())
+        require_positive(object.density, "object.density (the mass is 0)");
     }
     hand_pose_ = hand_pose;
     q_ = q;
@@ -88,6 +117,7 @@ class HandScene {
     o.shapes = object.shapes;
     o.mass = object.mass;
     o.density = object.density;
+    o.shape_density = object.part_density;
     o.friction = options.friction;
     try {
       object_ = world_.add_body(o);
@@ -98,6 +128,18 @@ class HandScene {
       if (m.rfind("desc.", 0) != 0 || colon == std::string_view::npos) throw;
       detail::throw_invalid_argument("object." + std::string(m.substr(5, colon - 5)),
                                      m.substr(colon + 2));
+    }
+    // Friction per pair of materials: each part against every shape of every hand link.
+    if (!object.part_friction.empty()) {
+      const RigidBody<S>& ob = world_.body(object_);
+      for (const int b : link_body_) {
+        if (b < 0) continue;
+        const RigidBody<S>& lb = world_.body(b);
+        for (int c = lb.first_collider; c < lb.first_collider + lb.n_colliders; ++c)
+          for (int k = 0; k < ob.n_colliders; ++k)
+            world_.set_pair_friction(c, ob.first_collider + k,
+                                     object.part_friction[static_cast<std::size_t>(k)]);
+      }
     }
   }
 

@@ -144,7 +144,7 @@ std::vector<ObjectResult> run_experiment_with(const ExperimentOptions& options,
 /// \throws topograsp::invalid_argument naming the field for jobs < 1, a bad shard,
 /// max_hypotheses < 0, an empty object or method list, an object (by name) or a method given twice
 /// (their scenes would overwrite each other), an invalid object, or a transfer parameter outside
-/// its range (validate_transfer_parameters).
+/// its range (validate_transfer_parameters), or a negative or non-finite transfer.sim.friction.
 inline void validate_experiment_options(const ExperimentOptions& options) {
   if (options.jobs < 1) detail::throw_invalid_argument("jobs", "expected at least 1");
   if (options.shard_count < 1 || options.shard_index < 0 ||
@@ -167,6 +167,7 @@ inline void validate_experiment_options(const ExperimentOptions& options) {
                                                       "\" is given twice (each method once)");
   for (const GraspObject& o : options.objects) o.validate();
   validate_transfer_parameters(options.transfer);
+  require_non_negative(options.transfer.sim.friction, "transfer.sim.friction");
 }
 
 /// Runs the experiment described by \p options. Throws topograsp::invalid_argument naming the

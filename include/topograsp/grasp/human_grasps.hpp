@@ -32,7 +32,11 @@ struct GraspSimOptions {
     o.squeeze = deg(10.0);
     return o;
   }();
-  ShakeOptions shake{};        ///< the stability protocol
+  ShakeOptions shake{};  ///< the stability protocol
+  /// Friction between the hands and the objects: 0 (the default) takes each pair from the table
+  /// of materials (friction_coefficient(), docs/objects.md); a positive value is the Coulomb
+  /// coefficient of every pair, for a friction sensitivity run (grasp_transfer --friction MU).
+  double friction = 0.0;
   double contact_gap = 0.002;  ///< how close the approach brings the hand to the object (m)
   double standoff = 0.12;      ///< where the approach starts, back from the face (m)
 };
@@ -72,9 +76,34 @@ struct HumanGrasp {
   [[nodiscard]] bool stable() const noexcept { return reached && shake.stable; }
 };
 
-/// The object as the physics scene wants it, at the object-frame origin.
-[[nodiscard]] inline ObjectSpec object_spec(const GraspObject& object) {
-  return ObjectSpec{object.parts, Pose{}, object.mass, 0.0};
+/// The contact surface of hand model \p M, by its name: the human hand's skin, the Barrett's
+/// links, and the SDH's pads (also for any other model: its pads are the only robot surface with
+/// a friction row of its own; docs/objects.md).
+template <const auto& M>
+[[nodiscard]] constexpr HandSurface hand_surface() noexcept {
+  if (M.name.view() == "human_hand") return HandSurface::human_skin;
+  if (M.name.view() == "barrett_bh8") return HandSurface::barrett;
+  return HandSurface::sdh_pad;
+}
+
+/// The object as the physics scene wants it, at the object-frame origin, held by a hand of
+/// surface \p hand: its parts' densities, and their friction against that hand from the table
+/// of materials (friction_coefficient()), or \p friction for every part when it is positive.
+/// An object without materials keeps its mass spread evenly and leaves the friction to
+/// HandSceneOptions::friction (or takes \p friction). Throws topograsp::invalid_argument naming
+/// "friction" for a negative or non-finite \p friction, and as GraspObject::validate() for a bad
+/// object.
+[[nodiscard]] inline ObjectSpec object_spec(const GraspObject& object, HandSurface hand,
+                                            double friction = 0.0) {
+  require_non_negative(friction, "friction");
+  object.validate();
+  ObjectSpec spec{object.parts, Pose{}, object.mass, 0.0};
+  spec.part_density = object.densities;
+  if (friction > 0.0)
+    spec.part_friction.assign(object.parts.size(), friction);
+  else
+    spec.part_friction = object.part_friction(hand);
+  return spec;
 }
 
 /// Runs hypothesis \p h of \p object with the human hand: place the palm (open pre-shape) at the
@@ -98,9 +127,9 @@ struct HumanGrasp {
   KinematicsData<free> d;
   forward_kinematics(d, *touched);
   g.hand_pose = link_pose(d, free.link("palm"));
-  HandSceneOptions scene_options = options.scene;
-  scene_options.friction = object.friction;
-  HandScene<models::human_hand> scene(g.hand_pose, pre, object_spec(object), scene_options);
+  HandScene<models::human_hand> scene(
+      g.hand_pose, pre, object_spec(object, HandSurface::human_skin, options.friction),
+      options.scene);
   const auto closed = close_hand(scene, options.close);
   g.q = closed.q_squeezed;
   g.touching_joints = closed.touching_joints;

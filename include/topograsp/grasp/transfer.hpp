@@ -340,10 +340,9 @@ namespace detail {
 inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3d& root,
                                const Vec<7>& q_open, const TransferOptions& options,
                                RobotGrasp& r) {
-  HandSceneOptions scene_options = options.sim.scene;
-  scene_options.friction = object.friction;
-  HandScene<models::schunk_sdh> scene(root, clamp_to_limits<models::schunk_sdh>(q_open),
-                                      object_spec(object), scene_options);
+  HandScene<models::schunk_sdh> scene(
+      root, clamp_to_limits<models::schunk_sdh>(q_open),
+      object_spec(object, HandSurface::sdh_pad, options.sim.friction), options.sim.scene);
   const auto closed = close_hand(scene, options.sim.close);
   r.hand_pose = root;
   r.q_open = q_open;

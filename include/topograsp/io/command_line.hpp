@@ -34,6 +34,8 @@ struct CommandLine {
 
 /// The largest --jobs accepted.
 inline constexpr int max_command_line_jobs = 1024;
+/// The largest --friction accepted (a Coulomb coefficient).
+inline constexpr double max_command_line_friction = 10.0;
 
 namespace detail {
 
@@ -114,7 +116,8 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
 /// option (e.g. "--out: expected a value, got the option \"--jobs\"") for: an unknown option, a
 /// missing, empty or "--" value, a value option given twice, a number that does not parse or is
 /// out of range (--jobs 1..1024, --max-hypotheses >= 0, --shard K/N with 1 <= K <= N, --seed an
-/// unsigned 64-bit integer), an unknown, empty or repeated object or method, an unknown
+/// unsigned 64-bit integer, --friction a number in (0, 10]), an unknown, empty or repeated
+/// object or method, an unknown
 /// --winding-reference, a --set that is not NAME=VALUE, names an unknown parameter, sets one twice
 /// or a value outside its range (transfer_parameters), and an --out with a NUL character.
 [[nodiscard]] inline CommandLine parse_command_line(std::span<const std::string_view> args) {
@@ -142,8 +145,8 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
       continue;
     }
     constexpr std::string_view value_options[] = {
-        "--objects", "--methods",           "--out", "--jobs", "--seed", "--max-hypotheses",
-        "--shard",   "--winding-reference", "--set"};
+        "--objects", "--methods",           "--out", "--jobs",    "--seed", "--max-hypotheses",
+        "--shard",   "--winding-reference", "--set", "--friction"};
     bool known = false;
     for (const std::string_view o : value_options) known = known || o == arg;
     if (!known)
@@ -195,6 +198,14 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
             arg, "expected 1 <= K <= N, got " + detail::quote_argument(value));
       cli.experiment.shard_index = k - 1;
       cli.experiment.shard_count = n;
+    } else if (arg == "--friction") {
+      const double mu = detail::parse_cli_number<double>(value, arg);
+      if (!(mu > 0.0 && mu <= max_command_line_friction))
+        detail::throw_invalid_argument(
+            arg, "expected a Coulomb coefficient in (0, " +
+                     std::to_string(static_cast<int>(max_command_line_friction)) + "], got " +
+                     detail::quote_argument(value));
+      cli.experiment.transfer.sim.friction = mu;
     } else if (arg == "--winding-reference") {
       cli.experiment.transfer.winding_reference =
           enum_from_name(value, {WindingReference::centre_of_mass, WindingReference::nearest_point},
@@ -260,6 +271,9 @@ options:
   --max-hypotheses M  only the first M hypotheses of each object (default 0: all)
   --winding-reference R  where the windings are taken: centre_of_mass (default, the paper)
                    or nearest_point (the object's point nearest the human's grasp centre)
+  --friction MU    one Coulomb coefficient for every hand-object pair, in (0, 10], for a friction
+                   sensitivity run (default: each pair from the table of materials,
+                   docs/objects.md)
   --set NAME=VALUE  set a transfer parameter (repeatable, each name once; the names, defaults
                    and valid ranges are listed below, their meaning in docs/transfer.md)
   --figures        also write DIR/figures/*.svg and DIR/index.html (Fig. 5-7, Table I)

@@ -33,11 +33,9 @@ template <const auto& M>
 [[nodiscard]] std::string grasp_mjcf(const GraspObject& object, const Eigen::Isometry3d& hand_pose,
                                      const Vec<M.nq>& q, const Eigen::Isometry3d& object_pose,
                                      const TransferOptions& options) {
-  HandSceneOptions scene_options = options.sim.scene;
-  scene_options.friction = object.friction;
-  ObjectSpec spec = object_spec(object);
+  ObjectSpec spec = object_spec(object, hand_surface<M>(), options.sim.friction);
   spec.pose = to_pose(object_pose);
-  const HandScene<M> scene(hand_pose, q, spec, scene_options);
+  const HandScene<M> scene(hand_pose, q, spec, options.sim.scene);
   return to_mjcf(scene);
 }
 
@@ -80,7 +78,8 @@ inline void check_scene_names(const ExperimentOptions& options) {
   cfg.set("shard",
           std::to_string(options.shard_index + 1) + "/" + std::to_string(options.shard_count));
   cfg.set("max_hypotheses", options.max_hypotheses);
-  cfg.set("friction_from_object", true);
+  // 0: each pair from the table of materials (docs/objects.md); else --friction's coefficient.
+  cfg.set("friction", options.transfer.sim.friction);
   cfg.set("hand_stiffness", options.transfer.sim.scene.stepper.hand_stiffness);
   cfg.set("squeeze", options.transfer.sim.close.squeeze);
   cfg.set("shake_steps", options.transfer.sim.shake.shake_steps);
