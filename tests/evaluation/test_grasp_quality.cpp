@@ -26,24 +26,35 @@ namespace {
 
 ContactForQuality contact(const Vec3& p, const Vec3& n, double mu) { return {p, n, mu}; }
 
-// A unit cube (half side 0.05 m) at the origin: a contact at point p on the face whose outward
-// normal is f pushes along -f.
+// A cube (half side a = 0.05 m) centred at the origin: a contact at point p on the face whose
+// outward normal is f pushes along -f.
 ContactForQuality on_cube(const Vec3& p, const Vec3& outward, double mu) {
   return contact(p, -outward, mu);
 }
 
 constexpr double a = 0.05;  // the cube's half side (m)
 
-// A thumb on the +x face against two fingers on the -x face.
-std::vector<ContactForQuality> three_finger_cube(double mu) {
-  return {on_cube({a, 0, 0}, Vec3::UnitX(), mu), on_cube({-a, 0.03, 0}, -Vec3::UnitX(), mu),
-          on_cube({-a, -0.03, 0}, -Vec3::UnitX(), mu)};
-}
-
 // One contact at the centre of each of the faces +-x and +-y.
 std::vector<ContactForQuality> four_finger_cube(double mu) {
   return {on_cube({a, 0, 0}, Vec3::UnitX(), mu), on_cube({-a, 0, 0}, -Vec3::UnitX(), mu),
           on_cube({0, a, 0}, Vec3::UnitY(), mu), on_cube({0, -a, 0}, -Vec3::UnitY(), mu)};
+}
+
+Wrenches wrenches_of(const std::vector<ContactForQuality>& c, const Vec3& centre, double scale,
+                     int edges = 8) {
+  Wrenches w;
+  QualityOptions o;
+  o.edges = edges;
+  contact_wrenches(c, centre, scale, o, w);
+  return w;
+}
+
+#ifdef TOPOGRASP_HAVE_QHULL
+
+// A thumb on the +x face against two fingers on the -x face.
+std::vector<ContactForQuality> three_finger_cube(double mu) {
+  return {on_cube({a, 0, 0}, Vec3::UnitX(), mu), on_cube({-a, 0.03, 0}, -Vec3::UnitX(), mu),
+          on_cube({-a, -0.03, 0}, -Vec3::UnitX(), mu)};
 }
 
 // GraspIt's torque scale for the cube about its centre: its half diagonal.
@@ -87,14 +98,7 @@ double sampled_epsilon(const Wrenches& w) {
   return best;
 }
 
-Wrenches wrenches_of(const std::vector<ContactForQuality>& c, const Vec3& centre, double scale,
-                     int edges = 8) {
-  Wrenches w;
-  QualityOptions o;
-  o.edges = edges;
-  contact_wrenches(c, centre, scale, o, w);
-  return w;
-}
+#endif  // TOPOGRASP_HAVE_QHULL
 
 }  // namespace
 

@@ -11,6 +11,7 @@
 #include <numbers>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
@@ -61,12 +62,16 @@ inline void contact_wrenches(std::span<const ContactForQuality> contacts, const 
   Eigen::Index count = 0;
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const ContactForQuality& c = contacts[i];
-    const std::string name = "contacts[" + std::to_string(i) + "]";
-    require_finite(c.point, name + ".point");
-    require_finite(c.normal, name + ".normal");
+    // The argument's name is built only for an error: this loop runs for every grasp scored.
+    const auto name = [i](std::string_view field) {
+      return "contacts[" + std::to_string(i) + "]." + std::string(field);
+    };
+    if (!c.point.allFinite()) require_finite(c.point, name("point"));
+    if (!c.normal.allFinite()) require_finite(c.normal, name("normal"));
     if (!(c.normal.norm() > 0.0))
-      detail::throw_invalid_argument(name + ".normal", "expected a non-zero normal");
-    require_non_negative(c.friction, name + ".friction");
+      detail::throw_invalid_argument(name("normal"), "expected a non-zero normal");
+    if (!(c.friction >= 0.0) || !std::isfinite(c.friction))
+      require_non_negative(c.friction, name("friction"));
     count += c.friction > 0.0 ? options.edges : 1;
   }
   out.resize(6, count);
