@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include <topograsp/evaluation/grasp_wrench.hpp>
 #include <topograsp/kinematics/data.hpp>
 #include <topograsp/kinematics/forward.hpp>
 #include <topograsp/physics/world.hpp>
@@ -284,6 +285,28 @@ class HandScene {
       return buf;
     }
     return {};
+  }
+
+  /// The hand-object contact points of the last step with a separation of at most
+  /// \p max_separation (m), as the Ferrari-Canny epsilon takes them (ferrari_canny_epsilon() in
+  /// evaluation/grasp_quality.hpp): the world point, the unit normal pointing into the object and
+  /// the pair's friction coefficient. Empty before the first step. Allocates the returned vector.
+  [[nodiscard]] std::vector<ContactForQuality> hand_contact_points(
+      double max_separation = 0.0) const {
+    std::vector<ContactForQuality> out;
+    for (const Manifold<S>& m : world_.manifolds()) {
+      if (m.body_a != object_ && m.body_b != object_) continue;
+      // A manifold's normal points from body A into body B.
+      const double into_object = m.body_b == object_ ? 1.0 : -1.0;
+      for (int k = 0; k < m.count; ++k) {
+        const ContactPoint<S>& p = m.points[static_cast<std::size_t>(k)];
+        if (!(static_cast<double>(p.separation) <= max_separation)) continue;
+        out.push_back({p.point.template cast<double>(),
+                       into_object * p.normal.template cast<double>(),
+                       static_cast<double>(m.friction)});
+      }
+    }
+    return out;
   }
 
  private:
