@@ -213,7 +213,7 @@ BENCHMARK(BM_whole_transfer_plan)->Unit(benchmark::kMillisecond);
 
 // The topological transfer of one human grasp of the hammer as grasp_transfer runs it (T = 40,
 // up to 40 sweeps): the AICO plan of the 14-DOF arm + SDH, the final approach, closing and the
-// shake test. "plan ms" is the plan alone.
+// stability suite. "plan ms" is the plan alone.
 void BM_transfer_topological_hammer(benchmark::State& state) {
   const GraspObject hammer = objects::hammer();
   const HumanGrasp g = demonstrate(hammer, box_hypotheses(hammer)[26], 26);
@@ -223,7 +223,7 @@ void BM_transfer_topological_hammer(benchmark::State& state) {
     const RobotGrasp r = transfer_topological(hammer, g);
     plan_ms = r.plan_ms;
     sweeps = r.sweeps;
-    benchmark::DoNotOptimize(r.shake.stable);
+    benchmark::DoNotOptimize(r.stability.stable);
   }
   state.counters["plan ms"] = plan_ms;
   state.counters["sweeps"] = sweeps;

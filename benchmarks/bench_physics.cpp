@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Physics benchmarks: steps per second of the SDH holding a bottle and of the human hand holding a
 // hammer, the same scenes in MuJoCo 2.2 (when found) at the same time step, the ratio, and the
-// time of one full shake test.
+// time of one full stability suite.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -102,29 +102,29 @@ void BM_topograsp_human_hammer(benchmark::State& state) {
 BENCHMARK(BM_topograsp_human_hammer)->Unit(benchmark::kMicrosecond);
 
 template <class Scene>
-void run_shake(benchmark::State& state, const Scene& start) {
-  Scene scene = start;
-  ShakeResult r;
+void run_suite(benchmark::State& state, const Scene& closed) {
+  StabilityResult r;
   for (auto _ : state) {
-    scene = start;
-    r = shake_test(scene);
+    r = stability_suite(closed);
     benchmark::DoNotOptimize(r);
   }
+  int steps = 0;
+  for (const StabilityRecord& t : r.tests) steps += t.steps;
   state.counters["stable"] = r.stable;
-  state.counters["steps"] = r.steps;
+  state.counters["steps"] = steps;
 }
 
-void BM_shake_test_sdh_bottle(benchmark::State& state) {
+void BM_stability_suite_sdh_bottle(benchmark::State& state) {
   static const auto scene = sdh_bottle();
-  run_shake(state, scene);
+  run_suite(state, scene);
 }
-BENCHMARK(BM_shake_test_sdh_bottle)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_stability_suite_sdh_bottle)->Unit(benchmark::kMillisecond);
 
-void BM_shake_test_human_hammer(benchmark::State& state) {
+void BM_stability_suite_human_hammer(benchmark::State& state) {
   static const auto scene = human_hammer();
-  run_shake(state, scene);
+  run_suite(state, scene);
 }
-BENCHMARK(BM_shake_test_human_hammer)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_stability_suite_human_hammer)->Unit(benchmark::kMillisecond);
 
 #ifdef TOPOGRASP_HAVE_MUJOCO
 template <class Scene>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Hand scenes: closing each shipped hand on a cylinder, the shake test and the six-gravity test,
-// determinism, bad input.
+// Hand scenes: closing each shipped hand on a cylinder, the stability suite on an SDH grasp, bad
+// input. (The suite on scenes of known outcome: test_stability_suite.cpp.)
 #include "evaluation_test_support.hpp"
 
 #include <cstring>
@@ -68,69 +68,40 @@ TEST_CASE("closing each shipped hand on a cylinder stops every finger at contact
   }
 }
 
-TEST_CASE("a firm grasp passes the shake test and a slippery one fails it", "[evaluation][shake]") {
+TEST_CASE("a firm SDH grasp passes the stability suite and a slippery one fails it",
+          "[evaluation][stability]") {
+  StabilityOptions o;
+  o.hard_shake.steps = 0;  // a stress, not part of the verdict; the cage tests run it
   SECTION("mu = 1 holds") {
     auto scene = test::sdh_bottle_scene(1.0);
     REQUIRE(close_hand(scene).status == Status::success);
-    const ShakeResult r = shake_test(scene);
+    const Eigen::Isometry3d before = scene.object_pose();
+    const StabilityResult r = stability_suite(scene, o);
     CHECK(r.stable);
     CHECK(r.reason.empty());
-    CHECK(r.status == Status::success);
-    CHECK(r.finite);
-    CHECK(r.contacts > 0);
-    CHECK(r.translation < 0.02);
-    CHECK(r.rotation < deg(15));
-    CHECK(r.steps == 130);
-    CHECK(r.simulated_time == Approx(130.0 / 60.0));
+    for (std::size_t i = 0; i + 1 < k_stability_tests; ++i) {
+      const StabilityRecord& t = r.tests[i];
+      INFO(t.name << ": " << t.reason);
+      CHECK(t.passed);
+      CHECK(t.status == Status::success);
+      CHECK(t.contacts > 0);
+      CHECK(t.translation < 0.02);
+      CHECK(t.rotation < deg(15));
+      CHECK(t.force_median > 0.0);
+      CHECK(t.force_ratio == Approx(t.force_median / r.weight));
+    }
+    CHECK(r.shake().steps == 100);
+    CHECK(scene.object_pose().isApprox(before, 0.0));  // the suite works on copies
   }
   SECTION("mu = 0.05 drops the bottle") {
     auto scene = test::sdh_bottle_scene(0.05);
     REQUIRE(close_hand(scene).status == Status::success);
-    const ShakeResult r = shake_test(scene);
+    const StabilityResult r = stability_suite(scene, o);
     CHECK_FALSE(r.stable);
     CHECK_FALSE(r.reason.empty());
-    CHECK(r.translation > 0.02);
+    CHECK_FALSE(r.shake().passed);
+    CHECK(r.shake().translation > 0.02);
   }
-}
-
-TEST_CASE("the six-gravity-direction test holds a firm grasp and leaves the scene alone",
-          "[evaluation][shake]") {
-  auto scene = test::sdh_bottle_scene(1.0);
-  REQUIRE(close_hand(scene).status == Status::success);
-  const Eigen::Isometry3d before = scene.object_pose();
-  const GravityTestResult g = gravity_test(scene);
-  CHECK(g.stable);
-  for (std::size_t d = 0; d < 6; ++d) {
-    INFO("direction " << d);
-    CHECK(g.held[d]);
-    CHECK(g.contacts[d] > 0);
-    CHECK(g.translation[d] < 0.02);
-  }
-  CHECK(scene.object_pose().isApprox(before, 0.0));
-  auto slippery = test::sdh_bottle_scene(0.05);
-  REQUIRE(close_hand(slippery).status == Status::success);
-  CHECK_FALSE(gravity_test(slippery).stable);
-}
-
-TEST_CASE("shakes are random but reproducible", "[evaluation][shake][determinism]") {
-  auto a = test::sdh_bottle_scene(1.0);
-  REQUIRE(close_hand(a).status == Status::success);
-  auto b = a, c = a;
-  ShakeOptions o;
-  o.seed = 7;
-  const ShakeResult ra = shake_test(a, o), rb = shake_test(b, o);
-  o.seed = 8;
-  const ShakeResult rc = shake_test(c, o);
-  // Bitwise identical runs for the same seed.
-  CHECK(std::memcmp(&ra.translation, &rb.translation, sizeof(double)) == 0);
-  CHECK(std::memcmp(&ra.rotation, &rb.rotation, sizeof(double)) == 0);
-  const auto& ba = a.world().body(a.object_body());
-  const auto& bb = b.world().body(b.object_body());
-  CHECK(std::memcmp(ba.x.data(), bb.x.data(), 3 * sizeof(double)) == 0);
-  CHECK(std::memcmp(ba.v.data(), bb.v.data(), 3 * sizeof(double)) == 0);
-  CHECK(std::memcmp(ba.q.coeffs().data(), bb.q.coeffs().data(), 4 * sizeof(double)) == 0);
-  // Another seed shakes differently.
-  CHECK(ra.translation != rc.translation);
 }
 
 TEST_CASE("bad input to the scene and the tests throws naming the argument",
@@ -190,11 +161,11 @@ TEST_CASE("bad input to the scene and the tests throws naming the argument",
   test::check_throws_naming(
       [&] {
         HandScene<models::schunk_sdh> s(hand, q, good);
-        ShakeOptions o;
-        o.shakes = 0;
-        (void)shake_test(s, o);
+        StabilityOptions o;
+        o.shake.rotations = 0;
+        (void)stability_suite(s, o);
       },
-      "options");
+      "options.shake.rotations");
   test::check_throws_naming(
       [&] {
         HandSceneOptions so;

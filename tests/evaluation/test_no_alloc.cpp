@@ -14,21 +14,39 @@ using namespace topograsp;
 // instantiations are in tests/physics/test_instantiation.cpp).
 template class topograsp::HandScene<models::schunk_sdh, float>;
 
-TEST_CASE("stepping a built scene and shaking it allocate nothing", "[evaluation][alloc]") {
+TEST_CASE("stepping a built scene allocates nothing", "[evaluation][alloc]") {
   auto scene = test::sdh_bottle_scene(1.0);
   REQUIRE(close_hand(scene).status == Status::success);
   const long before = test::allocations();
   Eigen::internal::set_is_malloc_allowed(false);
   Status s = Status::success;
   for (int i = 0; i < 50; ++i) s = scene.step();
-  const ShakeResult r = shake_test(scene);
   Eigen::internal::set_is_malloc_allowed(true);
   const long after = test::allocations();
   CHECK(s == Status::success);
-  CHECK(r.stable);
   CHECK(after == before);
   // The counter does count (so the check above can fail).
   CHECK(test::allocation_counter_counts());
+}
+
+TEST_CASE("the stability suite allocates per test, never per step", "[evaluation][alloc]") {
+  auto scene = test::sdh_bottle_scene(1.0);
+  REQUIRE(close_hand(scene).status == Status::success);
+  // The same number of allocations (the scene copies and one force buffer) for 8 times the steps.
+  const auto count = [&](int scale) {
+    StabilityOptions o;
+    o.shake.steps = 20 * scale;
+    o.direction_steps = 5 * scale;
+    o.hard_shake.steps = 20 * scale;
+    const long before = test::allocations();
+    const StabilityResult r = stability_suite(scene, o);
+    const long n = test::allocations() - before;
+    CHECK(r.shake().steps == 20 * scale);
+    return n;
+  };
+  const long few = count(1), many = count(8);
+  CHECK(few > 0);  // it does copy the scene
+  CHECK(many == few);
 }
 
 TEST_CASE("the float stepper holds a box and a grasp", "[evaluation][float]") {
@@ -56,6 +74,8 @@ TEST_CASE("the float stepper holds a box and a grasp", "[evaluation][float]") {
       test::cylinder_object(hand, Eigen::Vector3d(0, 0, 0.15), Eigen::Vector3d::UnitY(), 0.035, 0.1,
                             0.5));
   REQUIRE(close_hand(scene).status == Status::success);
-  const ShakeResult r = shake_test(scene);
+  StabilityOptions o;
+  o.hard_shake.steps = 0;
+  const StabilityResult r = stability_suite(scene, o);
   CHECK(r.stable);
 }

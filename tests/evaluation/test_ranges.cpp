@@ -105,29 +105,6 @@ TEST_CASE("close_hand refuses a step that would take too many increments", "[eva
   CHECK(r.q_squeezed.allFinite());
 }
 
-TEST_CASE("the shake and gravity tests bound their counts and angles", "[evaluation][input]") {
-  HandScene<models::schunk_sdh> scene = test::sdh_bottle_scene();
-  const int big = std::numeric_limits<int>::max();  // settle + shake steps overflowed the count
-  ShakeOptions o;
-  o.settle_steps = big;
-  test::check_throws_naming([&] { (void)shake_test(scene, o); }, "options.settle_steps");
-  o = {};
-  o.shake_steps = big;
-  test::check_throws_naming([&] { (void)shake_test(scene, o); }, "options.shake_steps");
-  test::check_throws_naming([&] { (void)gravity_test(scene, o); }, "options.shake_steps");
-  o = {};
-  o.shakes = big;
-  test::check_throws_naming([&] { (void)shake_test(scene, o); }, "options.shakes");
-  o = {};
-  o.min_angle = -1e308;  // max - min overflowed to inf: a NaN hand pose mid-shake
-  o.max_angle = 1e308;
-  test::check_throws_naming([&] { (void)shake_test(scene, o); }, "options.min_angle");
-  o.min_angle = 0.0;
-  test::check_throws_naming([&] { (void)shake_test(scene, o); }, "options.max_angle");
-  // The scene was not stepped by any refused call.
-  CHECK(scene.world().steps() == 0);
-}
-
 TEST_CASE("an object the World cannot represent is refused naming the object",
           "[evaluation][input]") {
   const Eigen::Isometry3d hand = test::sdh_side_pose();

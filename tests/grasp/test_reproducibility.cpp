@@ -25,6 +25,9 @@ ExperimentOptions options(std::vector<GraspObject> objects) {
   c.jobs = 2;
   c.seed = 3;
   c.max_hypotheses = 4;  // small: the sanitizer build runs this too
+  // The squeeze closing overlaps the first bottle demonstrations by 1.1 cm, which the suite's
+  // 1 cm rule refuses; this test is about splitting a run, and needs some transfers to compare.
+  c.transfer.sim.stability.max_penetration = 0.02;
   return c;
 }
 
@@ -41,17 +44,20 @@ std::map<std::string, std::string> records(const ExperimentOptions& c,
                             std::to_string(static_cast<int>(g.at("id").as_number()));
     out[key] = r.dump(0);
   }
-  const auto shake = [](const ShakeResult& s) {
-    return std::to_string(s.translation) + " " + std::to_string(s.rotation) + " " +
-           std::to_string(s.force) + " " + std::to_string(s.contacts);
+  const auto shake = [](const StabilityResult& s) {
+    std::string text;
+    for (const StabilityRecord& t : s.tests)
+      text += std::to_string(t.translation) + " " + std::to_string(t.rotation) + " " +
+              std::to_string(t.force_end) + " " + std::to_string(t.contacts) + " ";
+    return text;
   };
   for (const ObjectResult& r : results) {
     for (const HumanGrasp& g : r.human)
-      out[r.object.name + "/human/" + std::to_string(g.id)] += " shake " + shake(g.shake);
+      out[r.object.name + "/human/" + std::to_string(g.id)] += " shake " + shake(g.stability);
     for (std::size_t m = 0; m < r.transfers.size(); ++m)
       for (std::size_t k = 0; k < r.transfers[m].size(); ++k)
         out[r.object.name + "/" + std::string(to_string(r.methods[m].method)) + "/" +
-            std::to_string(r.transferred_ids[k])] += " shake " + shake(r.transfers[m][k].shake);
+            std::to_string(r.transferred_ids[k])] += " shake " + shake(r.transfers[m][k].stability);
   }
   return out;
 }

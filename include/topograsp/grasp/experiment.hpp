@@ -2,7 +2,7 @@
 /// \file
 /// The paper's experiment (section IV, Table I) as a library call: human demonstrations on each
 /// object's box hypotheses, the stable ones transferred to the SDH by each method, every result
-/// shaken; in parallel, sharded, reproducible.
+/// judged by the stability suite; in parallel, sharded, reproducible.
 #pragma once
 
 #include <algorithm>
@@ -27,7 +27,7 @@ struct ExperimentOptions {
   std::vector<GraspObject> objects;     ///< default: the paper's hammer and bottle
   std::vector<TransferMethod> methods;  ///< default: all three
   int jobs = 1;                         ///< worker threads (>= 1)
-  std::uint64_t seed = 1;               ///< seeds every shake test (see grasp_seed)
+  std::uint64_t seed = 1;               ///< seeds every stability suite (see grasp_seed)
   int shard_index = 0;                  ///< run hypotheses with id % shard_count == shard_index
   int shard_count = 1;
   int max_hypotheses = 0;  ///< if > 0, only the first this many hypotheses of each object
@@ -38,7 +38,7 @@ struct ExperimentOptions {
 struct MethodSummary {
   TransferMethod method = TransferMethod::topological;
   int tested = 0;  ///< stable human grasps transferred
-  int stable = 0;  ///< transfers that passed the shake test
+  int stable = 0;  ///< transfers that the stability suite called stable
   [[nodiscard]] double rate() const noexcept {
     return tested > 0 ? static_cast<double>(stable) / tested : 0.0;
   }
@@ -67,7 +67,8 @@ struct ObjectResult {
   return h;
 }
 
-/// The seed of the shake test of grasp \p id of the object called \p object by method \p method
+/// The seed of the stability suite of grasp \p id of the object called \p object by method \p
+/// method
 /// (-1 for the demonstration): the object's name hashed (FNV-1a), then a SplitMix64 mix. A grasp's
 /// random stream depends only on what it is, never on the order, the threads, the other objects
 /// of the run or the shard, so any split of a run reproduces the whole.
@@ -144,7 +145,8 @@ std::vector<ObjectResult> run_experiment_with(const ExperimentOptions& options,
 /// \throws topograsp::invalid_argument naming the field for jobs < 1, a bad shard,
 /// max_hypotheses < 0, an empty object or method list, an object (by name) or a method given twice
 /// (their scenes would overwrite each other), an invalid object, or a transfer parameter outside
-/// its range (validate_transfer_parameters), or a negative or non-finite transfer.sim.friction.
+/// its range (validate_transfer_parameters), a negative or non-finite transfer.sim.friction, or
+/// bad stability options (validate_stability_options, named "transfer.sim.stability.<option>").
 inline void validate_experiment_options(const ExperimentOptions& options) {
   if (options.jobs < 1) detail::throw_invalid_argument("jobs", "expected at least 1");
   if (options.shard_count < 1 || options.shard_index < 0 ||
@@ -168,6 +170,7 @@ inline void validate_experiment_options(const ExperimentOptions& options) {
   for (const GraspObject& o : options.objects) o.validate();
   validate_transfer_parameters(options.transfer);
   require_non_negative(options.transfer.sim.friction, "transfer.sim.friction");
+  validate_stability_options(options.transfer.sim.stability, "transfer.sim.stability");
 }
 
 /// Runs the experiment described by \p options. Throws topograsp::invalid_argument naming the
@@ -219,7 +222,7 @@ std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& o
     run_parallel(static_cast<int>(ids.size()), [&](int k) {
       GraspSimOptions sim = options.transfer.sim;
       const int id = ids[static_cast<std::size_t>(k)];
-      sim.shake.seed = grasp_seed(options.seed, res.object.name, id, -1);
+      sim.stability.seed = grasp_seed(options.seed, res.object.name, id, -1);
       res.human[static_cast<std::size_t>(k)] =
           demonstrate(res.object, hyps[static_cast<std::size_t>(id)], id, sim);
       say("[" + res.object.name + "] human demonstrations " + std::to_string(++done) + "/" +
@@ -239,7 +242,7 @@ std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& o
       const std::size_t s = static_cast<std::size_t>(k) % std::max<std::size_t>(stable.size(), 1);
       TransferOptions transfer_options = options.transfer;
       const HumanGrasp& g = *stable[s];
-      transfer_options.sim.shake.seed =
+      transfer_options.sim.stability.seed =
           grasp_seed(options.seed, res.object.name, g.id, static_cast<int>(options.methods[m]));
       res.transfers[m][s] = transfer(options.methods[m], res.object, g, transfer_options);
       say("[" + res.object.name + "] transfers " + std::to_string(++done) + "/" +

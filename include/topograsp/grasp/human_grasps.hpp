@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
 /// Human demonstration grasps (paper IV, "Test data generation"): for each box hypothesis of an
-/// object, the 20-DOF human hand approaches until contact, closes and squeezes, and the shake
-/// test decides whether the grasp is stable.
+/// object, the 20-DOF human hand approaches until contact, closes and squeezes, and the stability
+/// suite (the paper's shake and the six gravity directions, from the closing-end state) decides
+/// whether the grasp is stable and so kept as a demonstration.
 #pragma once
 
 #include <optional>
 
 #include <topograsp/evaluation/close_hand.hpp>
-#include <topograsp/evaluation/shake_test.hpp>
+#include <topograsp/evaluation/stability_suite.hpp>
 #include <topograsp/grasp/hand_axes.hpp>
 #include <topograsp/grasp/hypothesis.hpp>
 #include <topograsp/grasp/placement.hpp>
@@ -32,7 +33,7 @@ struct GraspSimOptions {
     o.squeeze = deg(10.0);
     return o;
   }();
-  ShakeOptions shake{};  ///< the stability protocol
+  StabilityOptions stability{};  ///< the stability suite (its seed is set per grasp)
   /// Friction between the hands and the objects: 0 (the default) takes each pair from the table
   /// of materials (friction_coefficient(), docs/objects.md); a positive value is the Coulomb
   /// coefficient of every pair, for a friction sensitivity run (grasp_transfer --friction MU).
@@ -59,8 +60,8 @@ struct GraspSimOptions {
 }
 
 /// One human grasp: the hypothesis it comes from, the hand pose and joints it closed to, the
-/// shake test's verdict and the winding values of the four hand curves around the object's centre
-/// of mass. Poses are in the object frame.
+/// stability suite's verdict and the winding values of the four hand curves around the object's
+/// centre of mass. Poses are in the object frame.
 struct HumanGrasp {
   int id = 0;
   GraspHypothesis hypothesis;
@@ -68,12 +69,12 @@ struct HumanGrasp {
   Eigen::Isometry3d hand_pose = Eigen::Isometry3d::Identity();  ///< the palm (root link) pose
   Vec<20> q = Vec<20>::Zero();       ///< joints after closing and squeezing
   int touching_joints = 0;           ///< joints stopped by the object while closing
-  ShakeResult shake;                 ///< the stability verdict
+  StabilityResult stability;         ///< the stability suite's verdict and records
   Vec<4> windings = Vec<4>::Zero();  ///< w of gamma_1 (index) .. gamma_4 (pinky)
   WindingDescriptor descriptor;      ///< the two largest, which curves
   /// Where the object was after closing and squeezing (it starts at the identity).
   Eigen::Isometry3d object_pose = Eigen::Isometry3d::Identity();
-  [[nodiscard]] bool stable() const noexcept { return reached && shake.stable; }
+  [[nodiscard]] bool stable() const noexcept { return reached && stability.stable; }
 };
 
 /// The contact surface of hand model \p M, by its name: the human hand's skin, the Barrett's
@@ -107,7 +108,9 @@ template <const auto& M>
 }
 
 /// Runs hypothesis \p h of \p object with the human hand: place the palm (open pre-shape) at the
-/// stand-off, approach until contact, close and squeeze, shake. Deterministic for given options.
+/// stand-off, approach until contact, close and squeeze, then the stability suite on the scene as
+/// closing left it: the grasp is a demonstration only if stable(). Deterministic for given
+/// options. Throws as stability_suite() for bad options.stability.
 [[nodiscard]] inline HumanGrasp demonstrate(const GraspObject& object, const GraspHypothesis& h,
                                             int id, const GraspSimOptions& options = {}) {
   constexpr auto& free = models::human_hand_free;
@@ -134,7 +137,7 @@ template <const auto& M>
   g.q = closed.q_squeezed;
   g.touching_joints = closed.touching_joints;
   g.object_pose = scene.object_pose();
-  g.shake = shake_test(scene, options.shake);
+  g.stability = stability_suite(scene, options.stability);
   // The windings of the closed hand around the centre of mass.
   Vec<26> qc = *touched;
   qc.tail<20>() = g.q;

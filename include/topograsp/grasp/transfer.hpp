@@ -5,7 +5,7 @@
 /// paper's baseline "transplant" (the SDH at the human palm's pose, fingers closed), and by
 /// fingertip mapping (Rohling and Hollerbach 1993: the SDH's fingertips fitted to the human's
 /// thumb, index and middle tips by least squares). Each result is closed until contact and
-/// judged by the shake test, the hand without the arm.
+/// judged by the stability suite, the hand without the arm.
 #pragma once
 
 #include <algorithm>
@@ -82,7 +82,7 @@ enum class TransferMethod : std::uint8_t { topological, transplant, fingertip };
 
 /// The parameters of the transfer methods; every field has a default used by grasp_transfer.
 struct TransferOptions {
-  GraspSimOptions sim{};  ///< closing, squeeze and shake test of the transferred grasp
+  GraspSimOptions sim{};  ///< closing, squeeze and stability suite of the transferred grasp
   /// The SDH's joints before closing: knuckle 0 (fingers facing the thumb), phalanges open.
   Vec<7> sdh_preshape = (Vec<7>() << 0.0, -0.3, 0.3, -0.3, 0.3, -0.3, 0.3).finished();
   /// The arm's start configuration (rad): elbow bent, the hand pointing forward.
@@ -216,7 +216,8 @@ inline void validate_transfer_parameters(const TransferOptions& options) {
     detail::check_parameter_value(p, options.*(p.field));
 }
 
-/// A transferred grasp: where the SDH ended (object frame), how it was planned, the shake test.
+/// A transferred grasp: where the SDH ended (object frame), how it was planned, the stability
+/// suite.
 struct RobotGrasp {
   TransferMethod method = TransferMethod::topological;
   /// The method produced a hand pose of its own (else nothing was simulated and reason says
@@ -235,11 +236,11 @@ struct RobotGrasp {
   /// targets (the paper's Fig. 7), and AICO's sweeps.
   std::vector<Vec2> winding_plan, winding_targets;
   std::vector<AicoSweepRecord> sweep_log;
-  ShakeResult shake;
+  StabilityResult stability;  ///< the stability suite's verdict and records
   /// Where the object was after closing and squeezing (it starts at the identity): with
-  /// hand_pose and q_closed, the grasp that the shake test started from.
+  /// hand_pose and q_closed, the grasp that the stability suite started from.
   Eigen::Isometry3d object_pose = Eigen::Isometry3d::Identity();
-  [[nodiscard]] bool stable() const noexcept { return planned && shake.stable; }
+  [[nodiscard]] bool stable() const noexcept { return planned && stability.stable; }
 };
 
 namespace detail {
@@ -336,7 +337,8 @@ namespace detail {
 }  // namespace detail
 
 /// Closes the SDH at \p root (its palm in the object frame) with joints \p q_open on the object,
-/// squeezes, and runs the shake test; fills the simulation fields of \p r.
+/// squeezes, and runs the stability suite on the scene as closing left it; fills the simulation
+/// fields of \p r.
 inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3d& root,
                                const Vec<7>& q_open, const TransferOptions& options,
                                RobotGrasp& r) {
@@ -349,7 +351,7 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
   r.q_closed = closed.q_squeezed;
   r.winding = detail::sdh_windings(object.centre_of_mass(), root, closed.q_squeezed);
   r.object_pose = scene.object_pose();
-  r.shake = shake_test(scene, options.sim.shake);
+  r.stability = stability_suite(scene, options.sim.stability);
 }
 
 /// The SDH palm pose \p root (object frame, hand joints \p q_hand) moved along \p approach so

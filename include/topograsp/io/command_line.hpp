@@ -265,7 +265,7 @@ options:
   --force          write into DIR even if it is not empty and holds no earlier run
   --jobs N         worker threads, 1 to 1024 (default 1); if fewer threads can be started, the
                    run goes on with those and says so
-  --seed S         seed of the shake tests (default 1); same seed, same results
+  --seed S         seed of the stability suites (default 1); same seed, same results
   --shard K/N      run only hypotheses with id % N == K - 1 (1 <= K <= N), for job arrays; the
                    shards together give exactly the records of the whole run
   --max-hypotheses M  only the first M hypotheses of each object (default 0: all)

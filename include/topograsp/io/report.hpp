@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
 /// The pictures of a grasp-transfer run (grasp_transfer --figures): for a few grasps per object
-/// the human grasp and its transfer by each method side by side with the shake test's verdicts
+/// the human grasp and its transfer by each method side by side with the stability suite's verdicts
 /// (the paper's Fig. 5 and 6), the windings of one plan over time (Fig. 7) with AICO's cost per
 /// sweep, and index.html with Table I and every figure.
 #pragma once
@@ -67,9 +67,10 @@ inline std::vector<std::string> write_report(const std::filesystem::path& dir,
   HtmlPage page;
   page.title = "topograsp: grasp transfer, human hand to Schunk SDH";
   page.intro =
-      "Success rate of each transfer method over the stable human grasps (the shake test, the "
-      "hand without the arm), and for a few grasps the human demonstration beside each "
-      "transfer, captioned with the shake test's verdict.";
+      "Success rate of each transfer method over the stable human grasps (the stability suite "
+      "from the moment the fingers closed: the paper's shake and gravity along the six axis "
+      "directions of the hand, the hand without the arm), and for a few grasps the human "
+      "demonstration beside each transfer, captioned with the suite's verdict.";
   page.header.push_back("");
   for (const ObjectResult& r : results) page.header.push_back(r.object.name);
   page.rows = table_rows(results);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,94 @@ inline Json json_vector(const auto& v) {
   for (Eigen::Index i = 0; i < v.size(); ++i) a.emplace_back(static_cast<double>(v[i]));
   return Json(std::move(a));
 }
+
+// One test's record as results.json writes it.
+inline Json json_record(const StabilityRecord& t) {
+  Json r = Json::object();
+  r.set("name", std::string(t.name));
+  r.set("passed", t.passed);
+  r.set("reason", std::string(t.reason));
+  r.set("translation", t.translation);
+  r.set("rotation", t.rotation);
+  r.set("contacts", t.contacts);
+  r.set("force_median", t.force_median);
+  r.set("force_end", t.force_end);
+  r.set("force_ratio", t.force_ratio);
+  r.set("penetration", t.penetration);
+  r.set("steps", t.steps);
+  r.set("status", std::string(to_string(t.status)));
+  return r;
+}
+
+// The stability fields of a grasp record: the weight, the closing-end overlap and every test's
+// record (none when nothing was simulated).
+inline void set_stability(Json& rec, const StabilityResult* s) {
+  Json tests = Json::array();
+  if (s != nullptr)
+    for (const StabilityRecord& t : s->tests) tests.push_back(json_record(t));
+  rec.set("weight", s != nullptr ? Json(s->weight) : Json());
+  rec.set("closing_penetration", s != nullptr ? Json(s->closing_penetration) : Json());
+  rec.set("tests", tests);
+}
+
+// The median of v (0 values: null).
+inline Json json_median(std::vector<double> v) {
+  if (v.empty()) return Json();
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return Json(n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
+}
+
+// The summary of a set of grasps (nullptr: not simulated, counts as failing every test): how
+// many, how many stable, the rate, each test's pass rate, and the median over the stable ones of
+// the paper shake's force ratio.
+inline Json stability_summary(const std::vector<const StabilityResult*>& grasps) {
+  Json s = Json::object();
+  const int n = static_cast<int>(grasps.size());
+  int stable = 0;
+  std::array<int, k_stability_tests> passed{};
+  std::vector<double> ratios;
+  for (const StabilityResult* g : grasps) {
+    if (g == nullptr) continue;
+    for (std::size_t i = 0; i < k_stability_tests; ++i) passed[i] += g->tests[i].passed ? 1 : 0;
+    if (!g->stable) continue;
+    ++stable;
+    ratios.push_back(g->shake().force_ratio);
+  }
+  const auto rate = [n](int k) { return n > 0 ? static_cast<double>(k) / n : 0.0; };
+  s.set("tested", n);
+  s.set("stable", stable);
+  s.set("rate", rate(stable));
+  Json tests = Json::object();
+  for (std::size_t i = 0; i < k_stability_tests; ++i)
+    tests.set(std::string(to_string(static_cast<StabilityTest>(i))), rate(passed[i]));
+  s.set("test_pass_rate", tests);
+  s.set("median_force_ratio_stable", json_median(std::move(ratios)));
+  return s;
+}
+
+// The stability options as results.json's config writes them (angles in degrees).
+inline Json json_stability_options(const StabilityOptions& o, double time_step) {
+  const auto motion = [](const ShakeMotion& m) {
+    Json j = Json::object();
+    j.set("steps", m.steps);
+    j.set("rotations", m.rotations);
+    j.set("min_angle_deg", m.min_angle / deg(1.0));
+    j.set("max_angle_deg", m.max_angle / deg(1.0));
+    return j;
+  };
+  Json j = Json::object();
+  j.set("time_step", time_step);
+  j.set("shake", motion(o.shake));
+  j.set("direction_steps", o.direction_steps);
+  j.set("hard_shake", motion(o.hard_shake));
+  j.set("max_translation", o.max_translation);
+  j.set("max_rotation_deg", o.max_rotation / deg(1.0));
+  j.set("touch_distance", o.touch_distance);
+  j.set("max_penetration", o.max_penetration);
+  j.set("pivot", o.pivot == ShakePivot::palm ? "palm" : "object");
+  return j;
+}
 }  // namespace detail
 
 /// Checks that the objects of \p options have scene files of their own: distinct names can clean
@@ -82,7 +171,9 @@ inline void check_scene_names(const ExperimentOptions& options) {
   cfg.set("friction", options.transfer.sim.friction);
   cfg.set("hand_stiffness", options.transfer.sim.scene.stepper.hand_stiffness);
   cfg.set("squeeze", options.transfer.sim.close.squeeze);
-  cfg.set("shake_steps", options.transfer.sim.shake.shake_steps);
+  cfg.set("stability",
+          detail::json_stability_options(options.transfer.sim.stability,
+                                         options.transfer.sim.scene.stepper.time_step));
   cfg.set("aico_steps", options.transfer.aico.steps);
   Json transfer = Json::object();
   for (const TransferParameter& p : transfer_parameters)
@@ -96,13 +187,19 @@ inline void check_scene_names(const ExperimentOptions& options) {
     o.set("name", r.object.name);
     o.set("hypotheses", r.hypotheses);
     o.set("stable_human", r.stable_human());
+    std::vector<const StabilityResult*> set;
+    for (const HumanGrasp& g : r.human)
+      if (g.reached) set.push_back(&g.stability);
+    o.set("human", detail::stability_summary(set));
     Json ms = Json::object();
-    for (const MethodSummary& m : r.methods) {
-      Json s = Json::object();
-      s.set("tested", m.tested);
-      s.set("stable", m.stable);
-      s.set("rate", m.rate());
-      ms.set(to_string(m.method), s);
+    for (std::size_t m = 0; m < r.methods.size(); ++m) {
+      set.clear();
+      for (const RobotGrasp& t : r.transfers[m]) set.push_back(t.planned ? &t.stability : nullptr);
+      Json s = detail::stability_summary(set);
+      s.set("tested", r.methods[m].tested);
+      s.set("stable", r.methods[m].stable);
+      s.set("rate", r.methods[m].rate());
+      ms.set(to_string(r.methods[m].method), s);
     }
     o.set("methods", ms);
     out_objects.push_back(o);
@@ -118,7 +215,8 @@ inline void check_scene_names(const ExperimentOptions& options) {
       rec.set("winding_robot", Json::array());
       rec.set("plan_ms", 0.0);
       rec.set("sweeps", 0);
-      rec.set("reason", std::string(g.shake.reason));
+      rec.set("reason", g.stability.reason);
+      detail::set_stability(rec, &g.stability);
       grasps.push_back(rec);
     }
     for (std::size_t m = 0; m < r.methods.size(); ++m) {
@@ -141,7 +239,8 @@ inline void check_scene_names(const ExperimentOptions& options) {
         rec.set("winding_robot", detail::json_vector(t.winding));
         rec.set("plan_ms", t.plan_ms);
         rec.set("sweeps", t.sweeps);
-        rec.set("reason", t.planned ? std::string(t.shake.reason) : t.reason);
+        rec.set("reason", t.planned ? t.stability.reason : t.reason);
+        detail::set_stability(rec, t.planned ? &t.stability : nullptr);
         grasps.push_back(rec);
       }
     }
