@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
 /// Human demonstration grasps (paper IV, "Test data generation"): for each box hypothesis of an
-/// object, the 20-DOF human hand approaches until contact, closes and squeezes, and the shake
+/// object, the 20-DOF human hand approaches until contact, closes with its motors, and the shake
 /// test decides whether the grasp is stable.
 #pragma once
 
@@ -26,12 +26,8 @@ struct GraspSimOptions {
     o.stepper.hand_stiffness = 8000.0;
     return o;
   }();
-  /// Closing until contact, then a squeeze of 10 degrees past contact: a firm grip.
-  CloseOptions close = [] {
-    CloseOptions o;
-    o.squeeze = deg(10.0);
-    return o;
-  }();
+  /// Closing by the motors, holding at half their torque limits (CloseOptions defaults).
+  CloseOptions close{};
   ShakeOptions shake{};        ///< the stability protocol
   double contact_gap = 0.002;  ///< how close the approach brings the hand to the object (m)
   double standoff = 0.12;      ///< where the approach starts, back from the face (m)
@@ -62,12 +58,12 @@ struct HumanGrasp {
   GraspHypothesis hypothesis;
   bool reached = false;  ///< the approach touched the object (else nothing was simulated)
   Eigen::Isometry3d hand_pose = Eigen::Isometry3d::Identity();  ///< the palm (root link) pose
-  Vec<20> q = Vec<20>::Zero();       ///< joints after closing and squeezing
+  Vec<20> q = Vec<20>::Zero();       ///< joints when closing ended
   int touching_joints = 0;           ///< joints stopped by the object while closing
   ShakeResult shake;                 ///< the stability verdict
   Vec<4> windings = Vec<4>::Zero();  ///< w of gamma_1 (index) .. gamma_4 (pinky)
   WindingDescriptor descriptor;      ///< the two largest, which curves
-  /// Where the object was after closing and squeezing (it starts at the identity).
+  /// Where the object was when closing ended (it starts at the identity).
   Eigen::Isometry3d object_pose = Eigen::Isometry3d::Identity();
   [[nodiscard]] bool stable() const noexcept { return reached && shake.stable; }
 };
@@ -78,7 +74,7 @@ struct HumanGrasp {
 }
 
 /// Runs hypothesis \p h of \p object with the human hand: place the palm (open pre-shape) at the
-/// stand-off, approach until contact, close and squeeze, shake. Deterministic for given options.
+/// stand-off, approach until contact, close, shake. Deterministic for given options.
 [[nodiscard]] inline HumanGrasp demonstrate(const GraspObject& object, const GraspHypothesis& h,
                                             int id, const GraspSimOptions& options = {}) {
   constexpr auto& free = models::human_hand_free;
@@ -102,7 +98,7 @@ struct HumanGrasp {
   scene_options.friction = object.friction;
   HandScene<models::human_hand> scene(g.hand_pose, pre, object_spec(object), scene_options);
   const auto closed = close_hand(scene, options.close);
-  g.q = closed.q_squeezed;
+  g.q = closed.q_closed;
   g.touching_joints = closed.touching_joints;
   g.object_pose = scene.object_pose();
   g.shake = shake_test(scene, options.shake);

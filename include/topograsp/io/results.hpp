@@ -82,7 +82,8 @@ inline void check_scene_names(const ExperimentOptions& options) {
   cfg.set("max_hypotheses", options.max_hypotheses);
   cfg.set("friction_from_object", true);
   cfg.set("hand_stiffness", options.transfer.sim.scene.stepper.hand_stiffness);
-  cfg.set("squeeze", options.transfer.sim.close.squeeze);
+  cfg.set("hold_fraction", options.transfer.sim.close.hold_fraction);
+  cfg.set("closing_steps", options.transfer.sim.close.closing_steps);
   cfg.set("shake_steps", options.transfer.sim.shake.shake_steps);
   cfg.set("aico_steps", options.transfer.aico.steps);
   Json transfer = Json::object();
