@@ -36,12 +36,17 @@ void check_closing(const Vec<M.nq>& q, const Eigen::Vector3d& centre, const Eige
     CHECK(dir[i] * (result.q_contact[i] - q[i]) >= 0.0);
     const bool at_limit = result.q_contact[i] == lo[i] || result.q_contact[i] == hi[i];
     CHECK((result.touched[static_cast<std::size_t>(i)] || at_limit));
-    if (result.touched[static_cast<std::size_t>(i)]) {
-      CHECK(result.q_squeezed[i] ==
-            Approx(std::clamp(result.q_contact[i] + dir[i] * co.squeeze, lo[i], hi[i])));
-    }
+    // Then the motors, commanded closed, stopped each such joint where it stalls (its motor at
+    // its hold torque: pressing on the object, or pushed back by it) or at its limit; no motor
+    // gave more than its hold torque.
+    const double closed_limit = dir[i] > 0.0 ? hi[i] : lo[i];
+    const double torque = std::abs(scene.motor_torque(i));
+    CHECK((std::abs(result.q_closed[i] - closed_limit) < 0.01 ||
+           torque > 0.95 * scene.effort_limit(i)));
+    CHECK(torque <= scene.effort_limit(i) * 1.0001);
   }
-  // Squeezed, the hand presses on the object without a deep overlap (well under a finger radius).
+  CHECK(scene.effort_fraction() == co.hold_fraction);
+  // Closed, the hand presses on the object without a deep overlap (well under a finger radius).
   CHECK(scene.hand_force() > 1.0);
   for (const auto& m : scene.world().manifolds())
     for (int k = 0; k < m.count; ++k)
@@ -66,6 +71,24 @@ TEST_CASE("closing each shipped hand on a cylinder stops every finger at contact
     const Vec<4> q = Vec<4>::Zero();
     check_closing<models::barrett_bh8>(q, {0.0, -0.02, 0.14}, Eigen::Vector3d::UnitX(), 0.03, 3);
   }
+}
+
+TEST_CASE("the grip comes from the motors, not from the pads' stiffness", "[evaluation][close]") {
+  // The SDH holding a bottle: the normal force scales with the motors' torque limit and hardly
+  // depends on the finger pads' contact stiffness (which only sets how far they give).
+  const auto grip = [](double hold_fraction, double stiffness) {
+    auto scene = test::sdh_bottle_scene(1.0, stiffness);
+    CloseOptions o;
+    o.hold_fraction = hold_fraction;
+    REQUIRE(close_hand(scene, o).status == Status::success);
+    return scene.hand_force();
+  };
+  const double base = grip(0.5, 8000.0);
+  INFO("normal force at half the torque limit, 8000 N/m pads: " << base << " N");
+  // (Not exactly half: the fingers settle at other angles.)
+  CHECK(grip(0.25, 8000.0) == Approx(0.5 * base).epsilon(0.3));
+  CHECK(grip(0.5, 2000.0) == Approx(base).epsilon(0.15));
+  CHECK(grip(0.5, 32000.0) == Approx(base).epsilon(0.15));
 }
 
 TEST_CASE("a firm SDH grasp passes the stability suite and a slippery one fails it",

@@ -92,17 +92,21 @@ TEST_CASE("close_hand refuses a step that would take too many increments", "[eva
   o.bisections = 1000000000;
   test::check_throws_naming([&] { (void)close_hand(scene, o); }, "options.bisections");
   o = {};
-  o.squeeze_steps = std::numeric_limits<int>::max();
-  test::check_throws_naming([&] { (void)close_hand(scene, o); }, "options.squeeze_steps");
+  o.closing_steps = std::numeric_limits<int>::max();
+  test::check_throws_naming([&] { (void)close_hand(scene, o); }, "options.closing_steps");
+  o.closing_steps = 0;
+  test::check_throws_naming([&] { (void)close_hand(scene, o); }, "options.closing_steps");
   o = {};
-  o.squeeze = -1.0;
-  test::check_throws_naming([&] { (void)close_hand(scene, o); }, "options.squeeze");
+  for (const double f : {0.0, -0.5, 1.5, static_cast<double>(NAN)}) {
+    o.hold_fraction = f;
+    test::check_throws_naming([&] { (void)close_hand(scene, o); }, "options.hold_fraction");
+  }
   // A huge step is fine: one increment reaches the limit.
   o = {};
   o.step = 1e300;
   const auto r = close_hand(scene, o);
   CHECK(r.status == Status::success);
-  CHECK(r.q_squeezed.allFinite());
+  CHECK(r.q_closed.allFinite());
 }
 
 TEST_CASE("an object the World cannot represent is refused naming the object",

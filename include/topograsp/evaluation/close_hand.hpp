@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
-/// close_hand(): close a hand's fingers until they touch the object, then squeeze.
+/// close_hand(): close a hand's fingers with their motors until each stalls on the object or
+/// reaches its limit, holding at a stated fraction of the torque limits.
 #pragma once
 
 #include <algorithm>
@@ -16,24 +17,25 @@ namespace topograsp {
 
 /// The parameters of close_hand().
 struct CloseOptions {
-  /// Joint increment per iteration while closing (rad for revolute, m for prismatic joints).
-  /// At least the model's largest joint range / k_max_close_increments, so that closing takes at
-  /// most that many increments per joint (0.5 degrees gives 720 over a full turn). Default 0.5
-  /// degrees.
+  /// Joint increment per iteration of the geometric search for first contact (rad for revolute,
+  /// m for prismatic joints). At least the model's largest joint range / k_max_close_increments,
+  /// so that the search takes at most that many increments per joint (0.5 degrees gives 720
+  /// over a full turn). Default 0.5 degrees.
   double step = deg(0.5);
   /// Bisections that refine each contact value between two increments (each halves the
   /// bracket: 8 give 0.002 degrees), in [0, 64] (a double has 53 bits; more change nothing).
   /// Default 8.
   int bisections = 8;
-  /// How far each joint that touched is pushed on past contact (rad or m): the squeeze. With the
-  /// default hand stiffness of 2000 N/m, 2.5 degrees at a 0.1 m lever is about 4 mm of overlap,
-  /// some 9 N per link (joints in series add up at the fingertip). Default 2.5 degrees.
-  double squeeze = deg(2.5);
   /// A link touches the object when a contact's separation is at most this (m). Default 0.
   double touch_distance = 0.0;
-  /// Physics steps over which the targets ramp from contact to squeezed, with gravity off so the
-  /// object is not dropped before it is held; in [0, 1000000]. Default 10.
-  int squeeze_steps = 10;
+  /// The grip: the fraction of each joint's torque limit (LinkSpec::effort) its motor closes and
+  /// holds with, in (0, 1]. Default 0.5: a holding grasp, not a maximal one.
+  double hold_fraction = 0.5;
+  /// Physics steps, gravity off (the object is not dropped before it is held), over which the
+  /// motors, commanded closed, take the fingers from first contact to where they stall on the
+  /// object or reach their limits; in [1, 1000000]. Default 60 (1 s at 60 Hz: a finger joint
+  /// crosses 100 degrees at the SDH's 100 degrees/s).
+  int closing_steps = 60;
 };
 
 /// The most increments close_hand() takes per joint: CloseOptions::step must be at least the
@@ -43,12 +45,12 @@ inline constexpr double k_max_close_increments = 100000.0;
 /// The outcome of close_hand().
 template <int NQ>
 struct CloseResult {
-  Status status = Status::success;       ///< of the physics steps of the squeeze
-  Vec<NQ> q_contact = Vec<NQ>::Zero();   ///< each closing joint where its links first touch
-  Vec<NQ> q_squeezed = Vec<NQ>::Zero();  ///< the targets after the squeeze
+  Status status = Status::success;      ///< of the physics steps of the closing
+  Vec<NQ> q_contact = Vec<NQ>::Zero();  ///< each closing joint where its links first touch
+  Vec<NQ> q_closed = Vec<NQ>::Zero();   ///< the joints' positions when closing ends
   std::array<bool, static_cast<std::size_t>(NQ)> touched{};  ///< joints stopped by contact
   int touching_joints = 0;                                   ///< how many joints touched
-  int contacts = 0;  ///< hand-object contact points after the squeeze
+  int contacts = 0;  ///< hand-object contact points when closing ends
 };
 
 namespace detail {
@@ -68,33 +70,36 @@ std::array<bool, std::remove_cvref_t<decltype(M)>::n_links> links_after_joint(in
 
 }  // namespace detail
 
-/// Closes the hand of \p scene on its object: every joint with a closing direction (LinkSpec::
-/// closing, from the model) moves that way in increments, all joints in turn, until one of the
-/// links after it touches the object (refined by bisection) or it reaches its limit; then each
-/// joint that touched is pushed on by options.squeeze (clamped to its limit). The search is
-/// geometric (the object held still at its pose); then the hand is placed at the contact values
-/// and the scene is stepped options.squeeze_steps times, gravity off, while the targets ramp to
-/// the squeezed values. Works for any model; joints with closing 0 (abduction, a free base)
-/// keep their value. Throws topograsp::invalid_argument naming the option for a non-positive or
-/// non-finite step, a step below the largest joint range / k_max_close_increments (a finer
-/// search would take longer than any use warrants: 1e-8 rad would be 3e8 increments), a
-/// negative or non-finite squeeze or touch_distance, bisections outside [0, 64] or
-/// squeeze_steps outside [0, 1000000].
+/// Closes the hand of \p scene on its object with its motors. First a geometric search (the
+/// object held still at its pose): every joint with a closing direction (LinkSpec::closing)
+/// moves that way in increments, all joints in turn, until one of the links after it touches
+/// the object (refined by bisection) or it reaches its limit. The hand is placed there; then
+/// every closing joint's motor is commanded to its closed limit and every other joint's to stay,
+/// all at options.hold_fraction of their torque limits, and the scene is stepped
+/// options.closing_steps times with gravity off: each finger closes until it stalls on the
+/// object, pressing with what its motor gives, or reaches its limit. The scene is left holding
+/// (motors at hold_fraction, gravity restored): the moment closing ends, the reference of the
+/// stability tests. Works for any model whose joints have motors (HandScene); joints with
+/// closing 0 (abduction, a free base) keep their value. Throws topograsp::invalid_argument
+/// naming the option for a non-positive or non-finite step, a step below the largest joint
+/// range / k_max_close_increments (a finer search would take longer than any use warrants: 1e-8
+/// rad would be 3e8 increments), a negative or non-finite touch_distance, bisections outside
+/// [0, 64], a hold_fraction outside (0, 1] or closing_steps outside [1, 1000000].
 template <const auto& M, class S>
 CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options = {}) {
   constexpr int nq = M.nq;
   using ModelType = std::remove_cvref_t<decltype(M)>;
   require_positive(options.step, "options.step");
-  require_finite(options.squeeze, "options.squeeze");
   require_finite(options.touch_distance, "options.touch_distance");
-  if (options.squeeze < 0.0) detail::throw_invalid_argument("options.squeeze", "expected >= 0");
+  if (!(options.hold_fraction > 0.0 && options.hold_fraction <= 1.0))
+    detail::throw_invalid_argument("options.hold_fraction", "expected a value in (0, 1]");
   if (options.bisections < 0 || options.bisections > 64)
     detail::throw_invalid_argument("options.bisections",
                                    "expected 0 to 64, got " + std::to_string(options.bisections));
-  if (options.squeeze_steps < 0 || options.squeeze_steps > 1000000)
+  if (options.closing_steps < 1 || options.closing_steps > 1000000)
     detail::throw_invalid_argument(
-        "options.squeeze_steps",
-        "expected 0 to 1000000, got " + std::to_string(options.squeeze_steps));
+        "options.closing_steps",
+        "expected 1 to 1000000, got " + std::to_string(options.closing_steps));
   const World<S>& world = scene.world();
   const RigidBody<S>& object = world.body(scene.object_body());
   const Eigen::Isometry3d hand = scene.hand_pose();
@@ -178,24 +183,23 @@ CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options
     if (!any) break;
   }
   result.q_contact = q;
-  result.q_squeezed = q;
-  for (int i = 0; i < nq; ++i)
-    if (result.touched[static_cast<std::size_t>(i)]) {
-      ++result.touching_joints;
-      result.q_squeezed[i] = std::clamp(q[i] + dir[i] * options.squeeze, lo[i], hi[i]);
-    }
-  // Squeeze in the simulation, gravity off.
+  Vec<nq> closed = q;
+  for (int i = 0; i < nq; ++i) {
+    if (result.touched[static_cast<std::size_t>(i)]) ++result.touching_joints;
+    if (dir[i] > 0.0) closed[i] = hi[i];
+    if (dir[i] < 0.0) closed[i] = lo[i];
+  }
+  // Close with the motors, gravity off.
   scene.place_hand(hand, result.q_contact);
+  scene.set_effort_fraction(options.hold_fraction);
+  scene.set_joint_targets(closed);
   World<S>& w = scene.world();
   const detail::V3<S> gravity = w.gravity();
   w.set_gravity(Eigen::Vector3d::Zero());
-  for (int k = 1; k <= options.squeeze_steps && result.status == Status::success; ++k) {
-    const double a = static_cast<double>(k) / options.squeeze_steps;
-    scene.set_joint_targets(result.q_contact + a * (result.q_squeezed - result.q_contact));
+  for (int k = 0; k < options.closing_steps && result.status == Status::success; ++k)
     result.status = scene.step();
-  }
-  scene.set_joint_targets(result.q_squeezed);
   w.set_gravity(gravity.template cast<double>());
+  result.q_closed = scene.joint_positions();
   result.contacts = scene.hand_contacts();
   return result;
 }

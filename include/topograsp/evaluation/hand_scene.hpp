@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
-/// HandScene: a World holding a hand model's links as kinematic bodies, driven to the forward
-/// kinematics of joint targets, and an object made of shapes as a dynamic body.
+/// HandScene: a World holding a hand whose joints are driven by torque-limited motors (joint-space
+/// actuators of the World; the links are kinematic bodies placed at the forward kinematics of the
+/// actuators' positions) and an object made of shapes as a dynamic body.
 #pragma once
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include <topograsp/evaluation/grasp_wrench.hpp>
 #include <topograsp/kinematics/data.hpp>
 #include <topograsp/kinematics/forward.hpp>
+#include <topograsp/physics/mass_properties.hpp>
 #include <topograsp/physics/world.hpp>
 
 namespace topograsp {
@@ -36,17 +38,36 @@ struct ObjectSpec {
 
 /// The parameters of a HandScene beyond the stepper's.
 struct HandSceneOptions {
-  StepperOptions stepper{};  ///< time step, contact stiffness, ... (StepperOptions defaults)
+  /// Time step, contact stiffness, ...: StepperOptions defaults but 4 solver iterations (light
+  /// finger joints on a heavy object converge poorly in one, StepperOptions::iterations).
+  StepperOptions stepper = [] {
+    StepperOptions o;
+    o.iterations = 4;
+    return o;
+  }();
   /// Coulomb friction coefficient between the hand and the object. Default 1 (rubber-covered
   /// fingers on plastic or wood are about 0.8 to 1.2).
   double friction = 1.0;
+  /// The motors' position gain (1/s): each servo commands the velocity gain * (target -
+  /// position), within the joint's speed limit (ActuatorDesc::gain). Default 20/s: a joint 0.05
+  /// rad from its target moves at 1 rad/s.
+  double servo_gain = 20.0;
 };
 
 /// A hand of model \p M (a reference to a constexpr Model) holding an object, over scalar \p S.
 ///
-/// Every link with shapes becomes a kinematic body; the hand frame (the model's root link) is
-/// placed at hand_pose(). Each step() first moves every link to the forward kinematics of the
-/// joint targets at the current hand pose, then advances the World. Requires nothing else.
+/// The hand frame (the model's root link) is carried to hand_pose() like a mocap body. Each
+/// configuration entry (an actuated joint, with its mimic joints) is a joint-space actuator of
+/// the World: a servo with the joint's torque limit (LinkSpec::effort, scaled by
+/// effort_fraction()), speed limit (LinkSpec::velocity) and limits, whose inertia is the
+/// diagonal of the hand's joint-space inertia at the current configuration (link masses and
+/// centres of mass, LinkSpec::inertial(); each link's rotational inertia from its shapes) plus the
+/// rotor's (LinkSpec::armature), and which carries the weight of the links it moves. Contacts on
+/// a link push back on the actuators of its chain, so a finger presses on the object with what
+/// its motor gives and no more. Every link with shapes is a kinematic body of the World, moved
+/// after each step to the forward kinematics of the actuators' positions. The model must give
+/// every actuated joint an effort and a velocity limit; an actuator that moves no mass and has no
+/// armature gets an inertia of 1e-5 kg m^2 (a light finger joint's).
 template <const auto& M, class S = double>
   requires KinematicModel<decltype(M)>
 class HandScene {
@@ -54,22 +75,33 @@ class HandScene {
   using ModelType = std::remove_cvref_t<decltype(M)>;
   static constexpr int nq = M.nq;
   using Config = Vec<nq>;
+  static_assert(
+      [] {
+        for (const auto& s : M.supports)
+          if (s.size > k_max_body_joints) return false;
+        return true;
+      }(),
+      "a HandScene carries each link on at most k_max_body_joints joints");
 
-  /// Builds the scene: the hand frame at \p hand_pose with joints at \p q (also the targets), and
-  /// the object. Throws topograsp::invalid_argument naming the argument for a non-finite or
-  /// wrongly sized q, a bad pose (as set_hand_pose()), an object the World refuses (its ranges;
-  /// named as the object's field, e.g. "object.mass", "object.shapes[0].size[0]"), an
-  /// object without shapes, a bad shape, a non-positive mass (or density when the mass is 0 and
-  /// no part densities are given), a part_density or part_friction whose size is not the number
-  /// of shapes ("object.part_density", "object.part_friction") or with an entry that is not
-  /// positive and finite (part_density) or not in [0, 1e6] (part_friction), named with its index,
-  /// or bad options. part_friction is set on every pair of a hand link's shape and that part.
+  /// Builds the scene: the hand frame at \p hand_pose with joints at \p q clamped to the model's
+  /// limits (also the motors' targets; the motors at their full torque limit), and the object.
+  /// Throws topograsp::invalid_argument naming the argument for a non-finite or wrongly sized
+  /// q, a bad pose (as set_hand_pose()), an object the World refuses (its ranges; named as the
+  /// object's field, e.g. "object.mass", "object.shapes[0].size[0]"), an object without shapes,
+  /// a bad shape, a non-positive mass (or density when the mass is 0 and no part densities are
+  /// given), a part_density or part_friction whose size is not the number of shapes
+  /// ("object.part_density", "object.part_friction") or with an entry that is not positive and
+  /// finite (part_density) or not in [0, 1e6] (part_friction), named with its index, or bad
+  /// options; and naming "model" for a model whose actuated joint has no effort or velocity
+  /// limit. part_friction is set on every pair of a hand link's shape and that part.
   HandScene(const Eigen::Isometry3d& hand_pose, const Config& q, const ObjectSpec& object,
             const HandSceneOptions& options = {})
       : world_(options.stepper), options_(options) {
     require_configuration<M>(q, "q");
     require_hand_pose(hand_pose, "hand_pose");
     require_positive(options.friction, "options.friction");
+    require_positive(options.servo_gain, "options.servo_gain");
+    require_motors();
     if (object.shapes.empty())
       detail::throw_invalid_argument("object.shapes", "expected at least one shape");
     const std::size_t n_parts = object.shapes.size();
@@ -95,9 +127,32 @@ class HandScene {
       if (object.part_density.empty())
         require_positive(object.density, "object.density (the mass is 0)");
     }
-    hand_pose_ = hand_pose;
-    q_ = q;
+    hand_pose_ = placed_ = hand_pose;
+    q_ = target_ = clamp_to_limits<M>(q);
     forward_kinematics(kin_, q_);
+    link_inertia_.fill(Mat3::Zero());
+    for (std::size_t l = 0; l < ModelType::n_links; ++l) {
+      const LinkSpec& spec = M.links[l].spec;
+      link_com_[l] = Vec3(spec.com[0], spec.com[1], spec.com[2]);
+      std::vector<ShapeSpec> own;
+      for (const Shape& sh : M.shapes)
+        if (sh.link == static_cast<int>(l)) own.push_back(sh.spec);
+      if (spec.mass > 0.0 && !own.empty())
+        link_inertia_[l] = body_mass_properties<double>(own, spec.mass, 1000.0).inertia;
+    }
+    update_joint_space();
+    for (int i = 0; i < nq; ++i) {
+      const LinkSpec& spec = M.joint_spec(i);
+      ActuatorDesc a;
+      a.position = q_[i];
+      a.lower = spec.lower;
+      a.upper = spec.upper;
+      a.inertia = inertia_[i];
+      a.max_effort = M.joint_spec(i).effort;
+      a.max_velocity = M.joint_spec(i).velocity;
+      a.gain = options.servo_gain;
+      actuator_[static_cast<std::size_t>(i)] = world_.add_actuator(a);
+    }
     link_body_.fill(-1);
     std::vector<ShapeSpec> link_shapes;
     for (std::size_t l = 0; l < ModelType::n_links; ++l) {
@@ -144,12 +199,37 @@ class HandScene {
     }
   }
 
-  /// Sets the joint targets (dim nq, rad or m) that the next step() drives the links to.
-  /// Throws topograsp::invalid_argument for non-finite entries.
+  /// Sets the motors' targets (dim nq, rad or m). A target beyond a joint limit drives the joint
+  /// to its limit; a finger commanded past the object stops on it, pressing with its torque
+  /// limit. Throws topograsp::invalid_argument for non-finite entries.
   void set_joint_targets(const Config& q) {
     require_configuration<M>(q, "q");
-    q_ = q;
+    target_ = clamp_to_limits<M>(q);
+    for (int i = 0; i < nq; ++i)
+      world_.set_actuator_target(actuator_[static_cast<std::size_t>(i)], target_[i]);
   }
+  /// Scales every motor's torque limit to \p fraction of the joint's effort (LinkSpec::effort):
+  /// 1 to close, a stated fraction to hold (CloseOptions::hold_fraction). Throws
+  /// topograsp::invalid_argument naming "fraction" unless it is in (0, 1].
+  void set_effort_fraction(double fraction) {
+    if (!(fraction > 0.0 && fraction <= 1.0))
+      detail::throw_invalid_argument("fraction", "expected a value in (0, 1]");
+    effort_fraction_ = fraction;
+    for (int i = 0; i < nq; ++i)
+      world_.set_actuator_max_effort(actuator_[static_cast<std::size_t>(i)], effort_limit(i));
+  }
+  /// The fraction of each joint's effort its motor may give now.
+  [[nodiscard]] double effort_fraction() const noexcept { return effort_fraction_; }
+  /// The torque limit (N m, or N) of configuration entry \p i's motor now.
+  [[nodiscard]] double effort_limit(int i) const noexcept {
+    return effort_fraction_ * M.joint_spec(i).effort;
+  }
+  /// The torque (N m, or N) configuration entry \p i's motor gave over the last step.
+  [[nodiscard]] double motor_torque(int i) const noexcept {
+    return world_.actuator_torque(actuator_[static_cast<std::size_t>(i)]);
+  }
+  /// The joints' positions (dim nq, rad or m): where the motors have taken them.
+  [[nodiscard]] const Config& joint_positions() const noexcept { return q_; }
   /// The largest coordinate (m) of a hand pose: 1e6 m. Far beyond any workspace, and small
   /// enough that every link pose (the hand pose times a link's offset) stays within the World's
   /// max_length() for both double and float.
@@ -162,34 +242,70 @@ class HandScene {
     require_hand_pose(pose, "pose");
     hand_pose_ = pose;
   }
-  /// Puts the hand at \p pose with joints \p q at once (no motion, no contact impulses), and makes
-  /// them the targets.
+  /// Puts the hand at \p pose with joints at \p q (clamped to the limits) at once, at rest (no
+  /// motion, no contact impulses), and makes them the motors' targets.
   void place_hand(const Eigen::Isometry3d& pose, const Config& q) {
     set_hand_pose(pose);
     set_joint_targets(q);
+    placed_ = hand_pose_;
+    q_ = target_;
+    for (int i = 0; i < nq; ++i)
+      world_.set_actuator_position(actuator_[static_cast<std::size_t>(i)], q_[i]);
     forward_kinematics(kin_, q_);
     for (std::size_t l = 0; l < ModelType::n_links; ++l)
       if (link_body_[l] >= 0) world_.set_pose(link_body_[l], link_pose(static_cast<int>(l)));
   }
 
-  /// Drives the links to the targets and advances the world by one step; allocates nothing.
-  /// Returns the World's status (Status::numerical_issue ends the run). If a link pose at the
-  /// targets is not one the World accepts (World::target_in_range(): non-finite, or beyond
-  /// World::max_length(), e.g. a prismatic joint target of 1e300 m), nothing moves and the step
-  /// returns Status::invalid_input; the scene stays usable with other targets.
+  /// Advances the world by one step, allocating nothing: the hand frame moves to hand_pose()
+  /// (each link with it, at the joints' positions), the motors drive the joints towards their
+  /// targets within their torque limits while contacts push back, and the links are placed where
+  /// the joints went. Returns the World's status (Status::numerical_issue ends the run). If a
+  /// link pose at the new hand pose is not one the World accepts (World::target_in_range():
+  /// non-finite, or beyond World::max_length()), nothing moves and the step returns
+  /// Status::invalid_input; the scene stays usable.
   Status step() noexcept {
-    forward_kinematics(kin_, q_);
     std::array<Eigen::Isometry3d, ModelType::n_links> poses;
     for (std::size_t l = 0; l < ModelType::n_links; ++l) {
       poses[l] = link_pose(static_cast<int>(l));
       if (link_body_[l] >= 0 && !World<S>::target_in_range(poses[l])) return Status::invalid_input;
     }
+    // The joints of each link's chain in world axes where the links are now (placed_).
+    const Mat3 R = placed_.linear();
+    std::array<BodyJoint, k_max_body_joints> chain;
+    for (std::size_t l = 0; l < ModelType::n_links; ++l) {
+      if (link_body_[l] < 0) continue;
+      world_.set_target(link_body_[l], poses[l]);
+      int n = 0;
+      for (const SupportJoint& j : M.support(static_cast<int>(l))) {
+        const auto u = static_cast<std::size_t>(j.link);
+        BodyJoint& b = chain[static_cast<std::size_t>(n++)];
+        b.actuator = actuator_[static_cast<std::size_t>(j.q)];
+        b.axis = R * kin_.axis[u];
+        b.origin = placed_ * kin_.p[u];
+        b.gear = j.multiplier;
+        b.prismatic = j.type == JointType::prismatic;
+      }
+      world_.set_body_joints(link_body_[l],
+                             std::span<const BodyJoint>(chain.data(), static_cast<std::size_t>(n)));
+    }
+    update_joint_space();
+    for (int i = 0; i < nq; ++i) {
+      const int a = actuator_[static_cast<std::size_t>(i)];
+      world_.set_actuator_inertia(a, inertia_[i]);
+      world_.set_actuator_force(a, gravity_force_[i]);
+    }
+    const Status status = world_.step();
+    if (status != Status::success) return status;
+    for (int i = 0; i < nq; ++i)
+      q_[i] = static_cast<double>(world_.actuator(actuator_[static_cast<std::size_t>(i)]).q);
+    forward_kinematics(kin_, q_);
+    placed_ = hand_pose_;
     for (std::size_t l = 0; l < ModelType::n_links; ++l)
-      if (link_body_[l] >= 0) world_.set_target(link_body_[l], poses[l]);
-    return world_.step();
+      if (link_body_[l] >= 0) world_.move_kinematic(link_body_[l], link_pose(static_cast<int>(l)));
+    return status;
   }
 
-  /// The world pose of link \p l at the current targets and hand pose (after forward kinematics).
+  /// The world pose of link \p l at the joints' positions and the current hand pose.
   [[nodiscard]] Eigen::Isometry3d link_pose(int l) const noexcept {
     return hand_pose_ * topograsp::link_pose(kin_, l);
   }
@@ -257,7 +373,8 @@ class HandScene {
     return hand_pose_.inverse() * object_pose();
   }
   [[nodiscard]] const Eigen::Isometry3d& hand_pose() const noexcept { return hand_pose_; }
-  [[nodiscard]] const Config& joint_targets() const noexcept { return q_; }
+  /// The motors' targets (dim nq).
+  [[nodiscard]] const Config& joint_targets() const noexcept { return target_; }
   [[nodiscard]] const World<S>& world() const noexcept { return world_; }
   [[nodiscard]] World<S>& world() noexcept { return world_; }
   [[nodiscard]] int object_body() const noexcept { return object_; }
@@ -266,7 +383,7 @@ class HandScene {
     return link_body_[static_cast<std::size_t>(l)];
   }
   [[nodiscard]] const HandSceneOptions& options() const noexcept { return options_; }
-  /// Forward kinematics at the current targets (hand frame).
+  /// Forward kinematics at the joints' positions (hand frame).
   [[nodiscard]] const KinematicsData<M>& kinematics() const noexcept { return kin_; }
 
   /// What is wrong with \p pose as a hand pose ("" if nothing): not finite, not a rotation
@@ -310,6 +427,51 @@ class HandScene {
   }
 
  private:
+  // Every actuated joint needs a motor: an effort and a velocity limit.
+  static void require_motors() {
+    for (int i = 0; i < nq; ++i) {
+      const LinkSpec& s = M.joint_spec(i);
+      if (!(M.joint_spec(i).effort > 0.0 && M.joint_spec(i).velocity > 0.0))
+        detail::throw_invalid_argument(
+            "model", "joint '" + std::string(s.name.view()) + "' of '" +
+                         std::string(M.name.view()) +
+                         "' has no motor: give it LinkSpec::actuator(effort, velocity, armature)");
+    }
+  }
+  // The diagonal of the joint-space inertia at the joints' positions (kin_), plus the rotors',
+  // and the generalised force of the links' weights; hand frame axes, so gravity is rotated in.
+  void update_joint_space() noexcept {
+    inertia_ = Config::Zero();
+    gravity_force_ = Config::Zero();
+    const Vec3 g = hand_pose_.linear().transpose() * world_.gravity().template cast<double>();
+    for (int i = 0; i < nq; ++i) inertia_[i] = M.joint_spec(i).armature;
+    for (std::size_t l = 0; l < ModelType::n_links; ++l) {
+      const double m = M.links[l].spec.mass;
+      if (!(m > 0.0)) continue;
+      const Vec3 c = kin_.p[l] + kin_.R[l] * link_com_[l];
+      const Mat3 I = kin_.R[l] * link_inertia_[l] * kin_.R[l].transpose();
+      Mat<3, nq> Jv = Mat<3, nq>::Zero(), Jw = Mat<3, nq>::Zero();
+      for (const SupportJoint& j : M.support(static_cast<int>(l))) {
+        const auto u = static_cast<std::size_t>(j.link);
+        if (j.type == JointType::revolute) {
+          Jv.col(j.q) += j.multiplier * kin_.axis[u].cross(c - kin_.p[u]);
+          Jw.col(j.q) += j.multiplier * kin_.axis[u];
+        } else {
+          Jv.col(j.q) += j.multiplier * kin_.axis[u];
+        }
+      }
+      for (int i = 0; i < nq; ++i) {
+        inertia_[i] += m * Jv.col(i).squaredNorm() + Jw.col(i).dot(I * Jw.col(i));
+        gravity_force_[i] += m * g.dot(Jv.col(i));
+      }
+    }
+    for (int i = 0; i < nq; ++i)
+      if (!(inertia_[i] > 0.0)) inertia_[i] = k_min_inertia;
+  }
+  // An actuator that moves no mass and has no rotor inertia (a model without that data) gets
+  // this inertia (kg m^2): a light finger joint's.
+  static constexpr double k_min_inertia = 1e-5;
+
   static void require_hand_pose(const Eigen::Isometry3d& pose, std::string_view argument) {
     const std::string problem = hand_pose_problem(pose);
     if (!problem.empty()) detail::throw_invalid_argument(argument, problem);
@@ -318,8 +480,15 @@ class HandScene {
   World<S> world_;
   HandSceneOptions options_;
   KinematicsData<M> kin_;
-  Eigen::Isometry3d hand_pose_ = Eigen::Isometry3d::Identity();
-  Config q_ = Config::Zero();
+  Eigen::Isometry3d hand_pose_ = Eigen::Isometry3d::Identity();  // target of the next step
+  Eigen::Isometry3d placed_ = Eigen::Isometry3d::Identity();     // where the links are now
+  Config q_ = Config::Zero();                                    // the joints' positions
+  Config target_ = Config::Zero();                               // the motors' targets
+  Config inertia_ = Config::Zero(), gravity_force_ = Config::Zero();
+  double effort_fraction_ = 1.0;
+  std::array<int, static_cast<std::size_t>(nq)> actuator_{};
+  std::array<Vec3, ModelType::n_links> link_com_{};
+  std::array<Mat3, ModelType::n_links> link_inertia_{};
   std::array<int, ModelType::n_links> link_body_{};
   int object_ = -1;
 };

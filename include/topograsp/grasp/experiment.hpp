@@ -145,7 +145,8 @@ std::vector<ObjectResult> run_experiment_with(const ExperimentOptions& options,
 /// \throws topograsp::invalid_argument naming the field for jobs < 1, a bad shard,
 /// max_hypotheses < 0, an empty object or method list, an object (by name) or a method given twice
 /// (their scenes would overwrite each other), an invalid object, or a transfer parameter outside
-/// its range (validate_transfer_parameters), a negative or non-finite transfer.sim.friction, or
+/// its range (validate_transfer_parameters), a negative or non-finite transfer.sim.friction, a
+/// hold fraction outside (0, 1] (transfer.sim.close.hold_fraction, human_hold_fraction), or
 /// bad stability options (validate_stability_options, named "transfer.sim.stability.<option>").
 inline void validate_experiment_options(const ExperimentOptions& options) {
   if (options.jobs < 1) detail::throw_invalid_argument("jobs", "expected at least 1");
@@ -170,6 +171,10 @@ inline void validate_experiment_options(const ExperimentOptions& options) {
   for (const GraspObject& o : options.objects) o.validate();
   validate_transfer_parameters(options.transfer);
   require_non_negative(options.transfer.sim.friction, "transfer.sim.friction");
+  for (const auto& [f, name] :
+       {std::pair{options.transfer.sim.close.hold_fraction, "transfer.sim.close.hold_fraction"},
+        std::pair{options.transfer.sim.human_hold_fraction, "transfer.sim.human_hold_fraction"}})
+    if (!(f > 0.0 && f <= 1.0)) detail::throw_invalid_argument(name, "expected a value in (0, 1]");
   validate_stability_options(options.transfer.sim.stability, "transfer.sim.stability");
 }
 

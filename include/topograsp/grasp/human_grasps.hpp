@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
 /// Human demonstration grasps (paper IV, "Test data generation"): for each box hypothesis of an
-/// object, the 20-DOF human hand approaches until contact, closes and squeezes, and the stability
-/// suite (the paper's shake and the six gravity directions, from the closing-end state) decides
-/// whether the grasp is stable and so kept as a demonstration.
+/// object, the 20-DOF human hand approaches until contact, closes with its motors, and the
+/// stability suite (the paper's shake and the six gravity directions, from the closing-end state)
+/// decides whether the grasp is stable and so kept as a demonstration.
 #pragma once
 
 #include <optional>
@@ -27,12 +27,13 @@ struct GraspSimOptions {
     o.stepper.hand_stiffness = 8000.0;
     return o;
   }();
-  /// Closing until contact, then a squeeze of 10 degrees past contact: a firm grip.
-  CloseOptions close = [] {
-    CloseOptions o;
-    o.squeeze = deg(10.0);
-    return o;
-  }();
+  /// The robot hands' closing: by the motors, holding at half their torque limits (the SDH's and
+  /// the Barrett's efforts are their motors' limits; CloseOptions defaults).
+  CloseOptions close{};
+  /// The human hand holds with this fraction of its joints' efforts. Default 1: the human
+  /// model's efforts are already the torques of a comfortable holding grasp, about a fifth of
+  /// maximal strength (docs/models.md), not maximal ones.
+  double human_hold_fraction = 1.0;
   StabilityOptions stability{};  ///< the stability suite (its seed is set per grasp)
   /// Friction between the hands and the objects: 0 (the default) takes each pair from the table
   /// of materials (friction_coefficient(), docs/objects.md); a positive value is the Coulomb
@@ -67,12 +68,12 @@ struct HumanGrasp {
   GraspHypothesis hypothesis;
   bool reached = false;  ///< the approach touched the object (else nothing was simulated)
   Eigen::Isometry3d hand_pose = Eigen::Isometry3d::Identity();  ///< the palm (root link) pose
-  Vec<20> q = Vec<20>::Zero();       ///< joints after closing and squeezing
+  Vec<20> q = Vec<20>::Zero();                                  ///< joints when closing ended
   int touching_joints = 0;           ///< joints stopped by the object while closing
   StabilityResult stability;         ///< the stability suite's verdict and records
   Vec<4> windings = Vec<4>::Zero();  ///< w of gamma_1 (index) .. gamma_4 (pinky)
   WindingDescriptor descriptor;      ///< the two largest, which curves
-  /// Where the object was after closing and squeezing (it starts at the identity).
+  /// Where the object was when closing ended (it starts at the identity).
   Eigen::Isometry3d object_pose = Eigen::Isometry3d::Identity();
   [[nodiscard]] bool stable() const noexcept { return reached && stability.stable; }
 };
@@ -108,7 +109,7 @@ template <const auto& M>
 }
 
 /// Runs hypothesis \p h of \p object with the human hand: place the palm (open pre-shape) at the
-/// stand-off, approach until contact, close and squeeze, then the stability suite on the scene as
+/// stand-off, approach until contact, close, then the stability suite on the scene as
 /// closing left it: the grasp is a demonstration only if stable(). Deterministic for given
 /// options. Throws as stability_suite() for bad options.stability.
 [[nodiscard]] inline HumanGrasp demonstrate(const GraspObject& object, const GraspHypothesis& h,
@@ -133,8 +134,10 @@ template <const auto& M>
   HandScene<models::human_hand> scene(
       g.hand_pose, pre, object_spec(object, HandSurface::human_skin, options.friction),
       options.scene);
-  const auto closed = close_hand(scene, options.close);
-  g.q = closed.q_squeezed;
+  CloseOptions close = options.close;
+  close.hold_fraction = options.human_hold_fraction;
+  const auto closed = close_hand(scene, close);
+  g.q = closed.q_closed;
   g.touching_joints = closed.touching_joints;
   g.object_pose = scene.object_pose();
   g.stability = stability_suite(scene, options.stability);

@@ -82,7 +82,7 @@ enum class TransferMethod : std::uint8_t { topological, transplant, fingertip };
 
 /// The parameters of the transfer methods; every field has a default used by grasp_transfer.
 struct TransferOptions {
-  GraspSimOptions sim{};  ///< closing, squeeze and stability suite of the transferred grasp
+  GraspSimOptions sim{};  ///< closing and stability suite of the transferred grasp
   /// The SDH's joints before closing: knuckle 0 (fingers facing the thumb), phalanges open.
   Vec<7> sdh_preshape = (Vec<7>() << 0.0, -0.3, 0.3, -0.3, 0.3, -0.3, 0.3).finished();
   /// The arm's start configuration (rad): elbow bent, the hand pointing forward.
@@ -226,7 +226,7 @@ struct RobotGrasp {
   std::string reason;  ///< why not planned, or the planner's termination
   Eigen::Isometry3d hand_pose = Eigen::Isometry3d::Identity();  ///< SDH palm, object frame
   Vec<7> q_open = Vec<7>::Zero();                               ///< the SDH's joints before closing
-  Vec<7> q_closed = Vec<7>::Zero();                             ///< after closing and squeezing
+  Vec<7> q_closed = Vec<7>::Zero();                             ///< when closing ended
   /// w of the SDH's two curves after closing, around the centre of mass (topological: around
   /// its winding reference).
   Vec2 winding = Vec2::Zero();
@@ -237,8 +237,8 @@ struct RobotGrasp {
   std::vector<Vec2> winding_plan, winding_targets;
   std::vector<AicoSweepRecord> sweep_log;
   StabilityResult stability;  ///< the stability suite's verdict and records
-  /// Where the object was after closing and squeezing (it starts at the identity): with
-  /// hand_pose and q_closed, the grasp that the stability suite started from.
+  /// Where the object was when closing ended (it starts at the identity): with hand_pose and
+  /// q_closed, the grasp that the stability suite started from.
   Eigen::Isometry3d object_pose = Eigen::Isometry3d::Identity();
   [[nodiscard]] bool stable() const noexcept { return planned && stability.stable; }
 };
@@ -337,7 +337,7 @@ namespace detail {
 }  // namespace detail
 
 /// Closes the SDH at \p root (its palm in the object frame) with joints \p q_open on the object,
-/// squeezes, and runs the stability suite on the scene as closing left it; fills the simulation
+/// holds, and runs the stability suite on the scene as closing left it; fills the simulation
 /// fields of \p r.
 inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3d& root,
                                const Vec<7>& q_open, const TransferOptions& options,
@@ -348,8 +348,8 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
   const auto closed = close_hand(scene, options.sim.close);
   r.hand_pose = root;
   r.q_open = q_open;
-  r.q_closed = closed.q_squeezed;
-  r.winding = detail::sdh_windings(object.centre_of_mass(), root, closed.q_squeezed);
+  r.q_closed = closed.q_closed;
+  r.winding = detail::sdh_windings(object.centre_of_mass(), root, closed.q_closed);
   r.object_pose = scene.object_pose();
   r.stability = stability_suite(scene, options.sim.stability);
 }

@@ -170,7 +170,9 @@ inline void check_scene_names(const ExperimentOptions& options) {
   // 0: each pair from the table of materials (docs/objects.md); else --friction's coefficient.
   cfg.set("friction", options.transfer.sim.friction);
   cfg.set("hand_stiffness", options.transfer.sim.scene.stepper.hand_stiffness);
-  cfg.set("squeeze", options.transfer.sim.close.squeeze);
+  cfg.set("hold_fraction", options.transfer.sim.close.hold_fraction);
+  cfg.set("human_hold_fraction", options.transfer.sim.human_hold_fraction);
+  cfg.set("closing_steps", options.transfer.sim.close.closing_steps);
   cfg.set("stability",
           detail::json_stability_options(options.transfer.sim.stability,
                                          options.transfer.sim.scene.stepper.time_step));

@@ -51,6 +51,9 @@ struct Manifold {
   std::array<ContactPoint<S>, 4> points{};
   S friction = S(0);  ///< the pair's Coulomb coefficient
   bool hand = false;  ///< one body is kinematic: physical stiffness, torsional friction
+  /// Which body joint-space actuators carry (World::set_body_joints()): -1 body A, +1 body B,
+  /// 0 neither; set each step by prepare_contacts().
+  int articulated = 0;
   detail::V3<S> twist_axis = detail::V3<S>::UnitZ();
   S twist_mass = S(0);     ///< 0 when the pair has no torsional friction this step
   S twist_impulse = S(0);  ///< accumulated torsional impulse (N m s)

@@ -16,6 +16,7 @@
 #include <topograsp/core/assert.hpp>
 #include <topograsp/core/constants.hpp>
 #include <topograsp/geometry/detail/closest.hpp>
+#include <topograsp/physics/actuator.hpp>
 #include <topograsp/physics/contact.hpp>
 #include <topograsp/physics/rigid_body.hpp>
 #include <topograsp/physics/stepper_options.hpp>
@@ -30,6 +31,7 @@ namespace topograsp::detail {
 /// \param[in] h the sub-step (s).
 template <class S>
 void prepare_contacts(std::span<Manifold<S>> manifolds, std::span<const RigidBody<S>> bodies,
+                      std::span<const BodyJoints<S>> joints, std::span<const Actuator<S>> act,
                       const StepperOptions& options, S h) noexcept {
   using V3 = detail::V3<S>;
   using M3 = detail::M3<S>;
@@ -54,6 +56,11 @@ void prepare_contacts(std::span<Manifold<S>> manifolds, std::span<const RigidBod
     const S mA = A.inv_mass, mB = B.inv_mass;
     const M3& iA = A.inv_inertia;
     const M3& iB = B.inv_inertia;
+    // A body carried by joint-space actuators adds their inverse inertia along each row.
+    const BodyJoints<S>& JA = joints[static_cast<std::size_t>(m.body_a)];
+    const BodyJoints<S>& JB = joints[static_cast<std::size_t>(m.body_b)];
+    m.articulated = JA.count > 0 ? -1 : JB.count > 0 ? 1 : 0;
+    const BodyJoints<S>& J = m.articulated < 0 ? JA : JB;
     V3 axis = V3::Zero();
     for (int k = 0; k < m.count; ++k) {
       ContactPoint<S>& c = m.points[static_cast<std::size_t>(k)];
@@ -64,15 +71,30 @@ void prepare_contacts(std::span<Manifold<S>> manifolds, std::span<const RigidBod
       c.local_a = A.R.transpose() * c.anchor_a;
       c.local_b = B.R.transpose() * c.anchor_b;
       const V3 rnA = c.anchor_a.cross(n), rnB = c.anchor_b.cross(n);
-      const S kn = mA + mB + rnA.dot(iA * rnA) + rnB.dot(iB * rnB);
-      c.normal_mass = kn > S(0) ? S(1) / kn : S(0);
+      S kn = mA + mB + rnA.dot(iA * rnA) + rnB.dot(iB * rnB);
       detail::tangent_basis<S>(n, c.t1, c.t2);
       const V3 a1v = c.anchor_a.cross(c.t1), a2v = c.anchor_a.cross(c.t2);
       const V3 b1v = c.anchor_b.cross(c.t1), b2v = c.anchor_b.cross(c.t2);
       Eigen::Matrix<S, 2, 2> K;
       K(0, 0) = mA + mB + a1v.dot(iA * a1v) + b1v.dot(iB * b1v);
       K(1, 1) = mA + mB + a2v.dot(iA * a2v) + b2v.dot(iB * b2v);
-      K(0, 1) = K(1, 0) = a1v.dot(iA * a2v) + b1v.dot(iB * b2v);
+      K(0, 1) = a1v.dot(iA * a2v) + b1v.dot(iB * b2v);
+      if (m.articulated != 0) {
+        std::array<S, k_max_body_joints> sn{}, s1{}, s2{};
+        for (int j = 0; j < J.count; ++j) {
+          const V3 l = J.lever(j, c.point);
+          const auto u = static_cast<std::size_t>(j);
+          sn[u] = l.dot(n);
+          s1[u] = l.dot(c.t1);
+          s2[u] = l.dot(c.t2);
+        }
+        kn += joint_space_k<S>(J, act, sn, sn);
+        K(0, 0) += joint_space_k<S>(J, act, s1, s1);
+        K(1, 1) += joint_space_k<S>(J, act, s2, s2);
+        K(0, 1) += joint_space_k<S>(J, act, s1, s2);
+      }
+      K(1, 0) = K(0, 1);
+      c.normal_mass = kn > S(0) ? S(1) / kn : S(0);
       const S det = K.determinant();
       c.tangent_mass =
           det > S(0) ? Eigen::Matrix<S, 2, 2>(K.inverse()) : Eigen::Matrix<S, 2, 2>::Zero();
@@ -108,7 +130,13 @@ void prepare_contacts(std::span<Manifold<S>> manifolds, std::span<const RigidBod
     if (m.hand && torsion > S(0) && axis.squaredNorm() > S(1e-12)) {
       m.twist_axis = axis.normalized();
       m.twist_axis_now = m.twist_axis;
-      const S kt = m.twist_axis.dot(iA * m.twist_axis) + m.twist_axis.dot(iB * m.twist_axis);
+      S kt = m.twist_axis.dot(iA * m.twist_axis) + m.twist_axis.dot(iB * m.twist_axis);
+      if (m.articulated != 0) {
+        std::array<S, k_max_body_joints> st{};
+        for (int j = 0; j < J.count; ++j)
+          st[static_cast<std::size_t>(j)] = J.spin(j).dot(m.twist_axis);
+        kt += joint_space_k<S>(J, act, st, st);
+      }
       if (kt > S(0)) m.twist_mass = S(1) / kt;
     }
     if (m.twist_mass == S(0)) m.twist_impulse = S(0);
@@ -127,24 +155,30 @@ void apply_impulse(RigidBody<S>& b, const detail::V3<S>& impulse, const detail::
 /// Stage 2, every sub-step: applies the accumulated impulses of every point (normal and friction
 /// along the turned frame) and of the torsional row.
 template <class S>
-void warm_start_contacts(std::span<Manifold<S>> manifolds,
-                         std::span<RigidBody<S>> bodies) noexcept {
+void warm_start_contacts(std::span<Manifold<S>> manifolds, std::span<RigidBody<S>> bodies,
+                         std::span<const BodyJoints<S>> joints,
+                         std::span<Actuator<S>> act) noexcept {
   using V3 = detail::V3<S>;
   for (Manifold<S>& m : manifolds) {
     if (m.count == 0) continue;
     RigidBody<S>& A = bodies[static_cast<std::size_t>(m.body_a)];
     RigidBody<S>& B = bodies[static_cast<std::size_t>(m.body_b)];
+    const S sigma = static_cast<S>(m.articulated);
+    const BodyJoints<S>& J =
+        joints[static_cast<std::size_t>(m.articulated < 0 ? m.body_a : m.body_b)];
     for (int k = 0; k < m.count; ++k) {
       const ContactPoint<S>& c = m.points[static_cast<std::size_t>(k)];
       const V3 P = c.normal_impulse * c.n_now + c.tangent_impulse.x() * c.t1_now +
                    c.tangent_impulse.y() * c.t2_now;
       apply_impulse<S>(A, -P, c.ra);
       apply_impulse<S>(B, P, c.rb);
+      if (m.articulated != 0) push_joints<S>(J, act, c.point, V3(sigma * P));
     }
     if (m.twist_mass > S(0)) {
       const V3 L = m.twist_impulse * m.twist_axis_now;
       if (A.type == BodyType::dynamic) A.w -= A.inv_inertia * L;
       if (B.type == BodyType::dynamic) B.w += B.inv_inertia * L;
+      if (m.articulated != 0) twist_joints<S>(J, act, V3(sigma * L));
     }
   }
 }
@@ -158,6 +192,7 @@ void warm_start_contacts(std::span<Manifold<S>> manifolds,
 /// \param[in] use_bias whether overlaps are pushed apart (the soft bias of the biased solve).
 template <class S>
 void solve_contacts(std::span<Manifold<S>> manifolds, std::span<RigidBody<S>> bodies,
+                    std::span<const BodyJoints<S>> joints, std::span<Actuator<S>> act,
                     std::span<const detail::M3<S>> turned, const StepperOptions& options, S h,
                     bool use_bias) noexcept {
   TOPOGRASP_ASSERT(turned.size() == bodies.size(), "one rotation per body");
@@ -177,11 +212,22 @@ void solve_contacts(std::span<Manifold<S>> manifolds, std::span<RigidBody<S>> bo
     const S mA = A.inv_mass, mB = B.inv_mass;
     const M3& iA = A.inv_inertia;
     const M3& iB = B.inv_inertia;
+    // A body carried by actuators (sigma -1 for A, +1 for B) moves with their velocities too.
+    const S sigma = static_cast<S>(m.articulated);
+    const BodyJoints<S>& J =
+        joints[static_cast<std::size_t>(m.articulated < 0 ? m.body_a : m.body_b)];
+    const std::span<const Actuator<S>> cact = act;
     const auto push = [&](const ContactPoint<S>& c, const V3& P) {
       vA -= mA * P;
       wA -= iA * c.ra.cross(P);
       vB += mB * P;
       wB += iB * c.rb.cross(P);
+      if (m.articulated != 0) push_joints<S>(J, act, c.point, V3(sigma * P));
+    };
+    const auto relative_velocity = [&](const ContactPoint<S>& c) {
+      V3 dv = vB + wB.cross(c.rb) - vA - wA.cross(c.ra);
+      if (m.articulated != 0) dv += sigma * joint_velocity<S>(J, cact, c.point);
+      return dv;
     };
     S total = S(0);
     for (int k = 0; k < m.count; ++k) {
@@ -191,7 +237,8 @@ void solve_contacts(std::span<Manifold<S>> manifolds, std::span<RigidBody<S>> bo
       c.n_now = dR * c.normal;
       // Current separation: the two anchors started at the same point, so their gap along the
       // (turned) normal adds to the separation found by the narrow phase.
-      const S s = (B.x + c.rb - A.x - c.ra).dot(c.n_now) + c.separation;
+      S s = (B.x + c.rb - A.x - c.ra).dot(c.n_now) + c.separation;
+      if (m.articulated != 0) s += sigma * joint_displacement<S>(J, cact, c.point).dot(c.n_now);
       S bias = S(0), mass_scale = S(1), impulse_scale = S(0);
       if (s > S(0)) {
         bias = s * inv_h;  // speculative: allow the gap to close, no more
@@ -200,8 +247,7 @@ void solve_contacts(std::span<Manifold<S>> manifolds, std::span<RigidBody<S>> bo
         mass_scale = c.mass_scale;
         impulse_scale = c.impulse_scale;
       }
-      const V3 dv = vB + wB.cross(c.rb) - vA - wA.cross(c.ra);
-      const S vn = dv.dot(c.n_now);
+      const S vn = relative_velocity(c).dot(c.n_now);
       const S impulse =
           -c.normal_mass * mass_scale * (vn + bias) - impulse_scale * c.normal_impulse;
       const S next = std::max(c.normal_impulse + impulse, S(0));
@@ -216,7 +262,7 @@ void solve_contacts(std::span<Manifold<S>> manifolds, std::span<RigidBody<S>> bo
       ContactPoint<S>& c = m.points[static_cast<std::size_t>(k)];
       c.t1_now = dR * c.t1;
       c.t2_now = dR * c.t2;
-      const V3 dv = vB + wB.cross(c.rb) - vA - wA.cross(c.ra);
+      const V3 dv = relative_velocity(c);
       const Eigen::Matrix<S, 2, 1> vt(dv.dot(c.t1_now), dv.dot(c.t2_now));
       Eigen::Matrix<S, 2, 1> next = c.tangent_impulse - c.tangent_mass * vt;
       // Circular cone: |friction| <= mu * normal. Sticking uses the full 2x2 effective mass;
@@ -236,13 +282,15 @@ void solve_contacts(std::span<Manifold<S>> manifolds, std::span<RigidBody<S>> bo
       // Torsional friction: |torque impulse| <= mu * radius * normal impulse.
       m.twist_axis_now = dR * m.twist_axis;
       const S limit = mu * static_cast<S>(options.torsional_friction_radius) * total;
-      const S wn = (wB - wA).dot(m.twist_axis_now);
+      S wn = (wB - wA).dot(m.twist_axis_now);
+      if (m.articulated != 0) wn += sigma * joint_spin<S>(J, cact).dot(m.twist_axis_now);
       const S next = detail::clamp<S>(m.twist_impulse - m.twist_mass * wn, -limit, limit);
       const S d = next - m.twist_impulse;
       m.twist_impulse = next;
       const V3 L = d * m.twist_axis_now;
       wA -= iA * L;
       wB += iB * L;
+      if (m.articulated != 0) twist_joints<S>(J, act, V3(sigma * L));
     }
     if (A.type == BodyType::dynamic) {
       A.v = vA;

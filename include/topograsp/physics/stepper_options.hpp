@@ -13,8 +13,9 @@ namespace topograsp {
 /// documented default; default_stepper_options() returns them. Units are SI.
 ///
 /// Contacts come in two kinds. Contacts between a kinematic body (a hand link) and a dynamic body
-/// (the object) are physical spring-dampers: the force is hand_stiffness times the overlap, so a
-/// position-controlled finger squeezes with a force that does not depend on the object's mass.
+/// (the object) are physical spring-dampers, the compliance of a finger pad: the force is
+/// hand_stiffness times the overlap. What a finger presses with is set by its motor's torque
+/// limit (World::add_actuator()); the stiffness only sets how far the pad gives under it.
 /// Every other contact (dynamic-dynamic, dynamic-static) is a "rigid" soft contact in the sense of
 /// Box2D v3: its stiffness is given as a frequency that scales with the effective mass, so it
 /// behaves the same for a 10 g and a 10 kg body.
@@ -25,6 +26,12 @@ struct StepperOptions {
   /// positions and relaxes without bias. More sub-steps make stiff contacts and stacks more
   /// accurate at a linear cost. 1 to 1000. Default 4.
   int substeps = 4;
+  /// Gauss-Seidel passes over the actuator and contact rows in each solve of a sub-step (the
+  /// biased solve and the relax). One suffices for bodies of similar mass (Box2D v3 uses one and
+  /// prefers sub-steps); a hand's light finger joints pressing on a heavier object (effective
+  /// masses 1000 times apart) need several to converge, or the grasp jitters. 1 to 100.
+  /// Default 1; HandSceneOptions uses 4.
+  int iterations = 1;
   /// Gravity in the world frame (m/s^2). Default (0, 0, -9.80665).
   std::array<double, 3> gravity{0.0, 0.0, -standard_gravity};
 
@@ -40,7 +47,7 @@ struct StepperOptions {
 
   /// Stiffness (N/m) of a contact between a kinematic and a dynamic body, per pair of shapes,
   /// shared evenly among the pair's contact points: the steady normal force is hand_stiffness
-  /// times the overlap. Default 2000 N/m (2 N per mm of squeeze, a soft-fingertip value: the SDH's
+  /// times the overlap. Default 2000 N/m (2 N per mm of overlap, a soft-fingertip value: the SDH's
   /// rubber pads and a human fingertip both give about 1 to 5 N/mm).
   double hand_stiffness = 2000.0;
   /// Damping ratio of those contacts relative to the contact's effective mass (1 = critical);

@@ -15,6 +15,7 @@
 #include <topograsp/core/assert.hpp>
 #include <topograsp/core/error.hpp>
 #include <topograsp/core/status.hpp>
+#include <topograsp/physics/actuator.hpp>
 #include <topograsp/physics/contact.hpp>
 #include <topograsp/physics/contact_solver.hpp>
 #include <topograsp/physics/mass_properties.hpp>
@@ -98,6 +99,9 @@ class World {
   /// The defaults give 9.81 / 60^2 = 2.7 mm <= 5 mm.
   explicit World(const StepperOptions& options = {}) : options_(options) {
     require_positive(options.time_step, "options.time_step");
+    if (options.iterations < 1 || options.iterations > 100)
+      detail::throw_invalid_argument(
+          "options.iterations", "expected 1 to 100, got " + std::to_string(options.iterations));
     if (options.substeps < 1 || options.substeps > 1000)
       detail::throw_invalid_argument("options.substeps",
                                      "expected 1 to 1000, got " + std::to_string(options.substeps));
@@ -217,6 +221,7 @@ class World {
     }
     bodies_.push_back(b);
     targets_.push_back(Target{b.R, b.x, false});
+    joints_.push_back({});
     saved_.push_back({});
     turned_.push_back(M3::Identity());
     update_colliders(index);
@@ -331,6 +336,166 @@ class World {
     b.w = w.template cast<S>();
   }
 
+  /// Adds a joint-space actuator (see ActuatorDesc) and returns its index. Allocates. Throws
+  /// topograsp::invalid_argument naming the field ("desc.inertia", ...) for a non-finite value,
+  /// lower above upper, a position outside [lower, upper], or an inertia, max_effort,
+  /// max_velocity or gain that is not positive; and for values S cannot hold (limits and
+  /// position beyond max_length(), an inertia outside [min_length(), max_length()], a
+  /// max_velocity above StepperOptions::max_speed).
+  int add_actuator(const ActuatorDesc& desc) {
+    require_finite(desc.position, "desc.position");
+    require_finite(desc.lower, "desc.lower");
+    require_finite(desc.upper, "desc.upper");
+    if (desc.lower > desc.upper)
+      detail::throw_invalid_argument(
+          "desc.lower",
+          "expected at most desc.upper = " + number(desc.upper) + ", got " + number(desc.lower));
+    if (!(std::abs(desc.lower) <= static_cast<double>(max_length()) &&
+          std::abs(desc.upper) <= static_cast<double>(max_length())))
+      detail::throw_invalid_argument("desc.lower",
+                                     "expected limits of at most " + number(max_length()));
+    if (desc.position < desc.lower || desc.position > desc.upper)
+      detail::throw_invalid_argument("desc.position", "expected a value in [" + number(desc.lower) +
+                                                          ", " + number(desc.upper) + "], got " +
+                                                          number(desc.position));
+    require_actuator_inertia(desc.inertia, "desc.inertia");
+    require_positive(desc.max_effort, "desc.max_effort");
+    require_positive(desc.max_velocity, "desc.max_velocity");
+    if (!(desc.max_velocity <= options_.max_speed))
+      detail::throw_invalid_argument("desc.max_velocity", "expected at most options.max_speed = " +
+                                                              number(options_.max_speed) +
+                                                              ", got " + number(desc.max_velocity));
+    require_positive(desc.gain, "desc.gain");
+    detail::Actuator<S> a;
+    a.q = a.q0 = a.target = static_cast<S>(desc.position);
+    a.lower = static_cast<S>(desc.lower);
+    a.upper = static_cast<S>(desc.upper);
+    a.inertia = static_cast<S>(desc.inertia);
+    a.inv_inertia = S(1) / a.inertia;
+    a.max_effort = static_cast<S>(desc.max_effort);
+    a.max_velocity = static_cast<S>(desc.max_velocity);
+    a.gain = static_cast<S>(desc.gain);
+    actuators_.push_back(a);
+    saved_actuators_.push_back({});
+    return static_cast<int>(actuators_.size()) - 1;
+  }
+  [[nodiscard]] int actuator_count() const noexcept { return static_cast<int>(actuators_.size()); }
+  /// The state of actuator \p a (position q, velocity qd, target, limits, ...).
+  [[nodiscard]] const detail::Actuator<S>& actuator(int a) const noexcept {
+    TOPOGRASP_ASSERT(a >= 0 && a < actuator_count(), "actuator index out of range");
+    return actuators_[static_cast<std::size_t>(a)];
+  }
+  /// The torque (N m, or force N) the servo of actuator \p a gave over the last step (mean).
+  [[nodiscard]] double actuator_torque(int a) const noexcept {
+    return static_cast<double>(actuator(a).step_impulse) / options_.time_step;
+  }
+  /// Sets the servo target of actuator \p a (rad or m; a target beyond a limit drives the joint
+  /// to the limit). Throws topograsp::invalid_argument for a bad index or a value that is not
+  /// finite or beyond max_length().
+  void set_actuator_target(int a, double target) {
+    require_actuator(a, "a");
+    require_finite(target, "target");
+    if (!(std::abs(target) <= static_cast<double>(max_length())))
+      detail::throw_invalid_argument("target", "expected at most " + number(max_length()));
+    actuators_[static_cast<std::size_t>(a)].target = static_cast<S>(target);
+  }
+  /// Sets the torque limit of actuator \p a's servo (N m or N, > 0). Throws
+  /// topograsp::invalid_argument for a bad index or a value that is not positive and finite.
+  void set_actuator_max_effort(int a, double max_effort) {
+    require_actuator(a, "a");
+    require_positive(max_effort, "max_effort");
+    actuators_[static_cast<std::size_t>(a)].max_effort = static_cast<S>(max_effort);
+  }
+  /// Sets the inertia of actuator \p a (kg m^2 or kg), e.g. each step from the configuration.
+  /// Throws topograsp::invalid_argument as ActuatorDesc::inertia is checked.
+  void set_actuator_inertia(int a, double inertia) {
+    require_actuator(a, "a");
+    require_actuator_inertia(inertia, "inertia");
+    detail::Actuator<S>& x = actuators_[static_cast<std::size_t>(a)];
+    x.inertia = static_cast<S>(inertia);
+    x.inv_inertia = S(1) / x.inertia;
+  }
+  /// Sets the external generalised force on actuator \p a for the next steps (N m or N; e.g.
+  /// the weight of the links it carries). Throws topograsp::invalid_argument for a bad index or
+  /// a non-finite value.
+  void set_actuator_force(int a, double force) {
+    require_actuator(a, "a");
+    require_finite(force, "force");
+    actuators_[static_cast<std::size_t>(a)].force = static_cast<S>(force);
+  }
+  /// Puts actuator \p a at \p position at once, at rest, with its target there and its
+  /// accumulated impulses cleared. Throws topograsp::invalid_argument for a bad index or a
+  /// position outside its limits.
+  void set_actuator_position(int a, double position) {
+    require_actuator(a, "a");
+    detail::Actuator<S>& x = actuators_[static_cast<std::size_t>(a)];
+    require_finite(position, "position");
+    if (position < static_cast<double>(x.lower) || position > static_cast<double>(x.upper))
+      detail::throw_invalid_argument("position", "expected a value in [" + number(x.lower) + ", " +
+                                                     number(x.upper) + "], got " +
+                                                     number(position));
+    x.q = x.q0 = x.target = static_cast<S>(position);
+    x.qd = x.motor_impulse = x.lower_impulse = x.upper_impulse = x.step_impulse = S(0);
+  }
+  /// Declares the joints that carry kinematic body \p body for the next step (its chain, e.g. a
+  /// finger link's joints in world axes at the step's start): contacts on the body then push on
+  /// those actuators, and the body's contact points move with them within the step. The caller
+  /// moves the body to where the actuators took it after the step (move_kinematic()). An empty
+  /// span detaches the body. Allocates nothing. Throws topograsp::invalid_argument naming the
+  /// argument for a bad body index or a body that is not kinematic, more than k_max_body_joints
+  /// joints, a bad actuator index, a non-unit or non-finite axis, a non-finite origin or gear.
+  void set_body_joints(int body, std::span<const BodyJoint> joints) {
+    require_body(body, "body");
+    if (bodies_[static_cast<std::size_t>(body)].type != BodyType::kinematic)
+      detail::throw_invalid_argument("body", "expected a kinematic body");
+    if (joints.size() > static_cast<std::size_t>(k_max_body_joints))
+      detail::throw_invalid_argument("joints", "expected at most " +
+                                                   std::to_string(k_max_body_joints) +
+                                                   " joints, got " + std::to_string(joints.size()));
+    detail::BodyJoints<S>& out = joints_[static_cast<std::size_t>(body)];
+    for (std::size_t j = 0; j < joints.size(); ++j) {
+      // Checked without building a name first: this runs every step and allocates nothing.
+      const BodyJoint& in = joints[j];
+      const auto name = [j](std::string_view field) {
+        return "joints[" + std::to_string(j) + "]." + std::string(field);
+      };
+      if (in.actuator < 0 || in.actuator >= actuator_count())
+        require_actuator(in.actuator, name("actuator"));
+      if (!in.axis.allFinite() || !(std::abs(in.axis.norm() - 1.0) <= 1e-6))
+        detail::throw_invalid_argument(name("axis"), "expected a finite unit vector");
+      if (!in.origin.allFinite() ||
+          !(in.origin.cwiseAbs().maxCoeff() <= static_cast<double>(max_length())))
+        detail::throw_invalid_argument(name("origin"), "expected finite coordinates of at most " +
+                                                           number(max_length()) + " m");
+      if (!std::isfinite(in.gear))
+        detail::throw_invalid_argument(name("gear"), "expected a finite number");
+    }
+    out.count = static_cast<int>(joints.size());
+    for (std::size_t j = 0; j < joints.size(); ++j) {
+      out.actuator[j] = joints[j].actuator;
+      out.axis[j] = joints[j].axis.template cast<S>();
+      out.origin[j] = joints[j].origin.template cast<S>();
+      out.gear[j] = static_cast<S>(joints[j].gear);
+      out.prismatic[j] = joints[j].prismatic;
+    }
+  }
+  /// Moves kinematic body \p body to \p pose at once, keeping its motion across steps (the
+  /// velocity ramp of kinematic_substep()): for a body carried by actuators, placed after each
+  /// step where they took it. Throws as set_pose() does, and for a body that is not kinematic.
+  void move_kinematic(int body, const Eigen::Isometry3d& pose) {
+    require_body(body, "body");
+    if (bodies_[static_cast<std::size_t>(body)].type != BodyType::kinematic)
+      detail::throw_invalid_argument("body", "expected a kinematic body");
+    require_finite(pose.matrix(), "pose");
+    require_coordinates(pose.translation(), "pose");
+    RigidBody<S>& b = bodies_[static_cast<std::size_t>(body)];
+    b.R = orthonormalized(pose.linear().template cast<S>());
+    b.q = detail::Quat<S>(b.R).normalized();
+    b.R = b.q.toRotationMatrix();
+    b.x = pose.translation().template cast<S>() + b.R * b.local_com;
+    update_colliders(body);
+  }
+
   /// Sets gravity (m/s^2, world frame). Throws topograsp::invalid_argument naming "g" for
   /// non-finite values or when |g| * time_step^2 exceeds StepperOptions::speculative_distance
   /// (see the constructor).
@@ -351,9 +516,14 @@ class World {
     const int n_sub = options_.substeps;
     const S h = dt / static_cast<S>(n_sub);
     save_state();
+    for (detail::Actuator<S>& a : actuators_) {
+      a.q0 = a.q;
+      a.step_impulse = S(0);
+    }
     drive_kinematic(dt);
     find_contacts();
-    detail::prepare_contacts<S>(manifolds_, bodies_, options_, h);
+    detail::prepare_contacts<S>(manifolds_, bodies_, joints_, actuators_, options_, h);
+    const S push = static_cast<S>(options_.contact_push_max_speed);
     const S lin_damp = S(1) / (S(1) + h * static_cast<S>(options_.linear_damping));
     const S ang_damp = S(1) / (S(1) + h * static_cast<S>(options_.angular_damping));
     for (int sub = 0; sub < n_sub; ++sub) {
@@ -363,13 +533,25 @@ class World {
         b.v = lin_damp * (b.v + h * gravity_);
         b.w *= ang_damp;
       }
-      detail::warm_start_contacts<S>(manifolds_, bodies_);
+      for (detail::Actuator<S>& a : actuators_) a.qd += h * a.force * a.inv_inertia;
+      detail::warm_start_actuators<S>(actuators_);
+      detail::warm_start_contacts<S>(manifolds_, bodies_, joints_, actuators_);
       update_turned();
-      detail::solve_contacts<S>(manifolds_, bodies_, turned_, options_, h, true);
+      for (int it = 0; it < options_.iterations; ++it) {
+        detail::solve_actuators<S>(actuators_, h, true, push);
+        detail::solve_contacts<S>(manifolds_, bodies_, joints_, actuators_, turned_, options_, h,
+                                  true);
+      }
       integrate_positions(h);
+      for (detail::Actuator<S>& a : actuators_) a.q += h * a.qd;
       update_turned();
-      detail::solve_contacts<S>(manifolds_, bodies_, turned_, options_, h, false);
+      for (int it = 0; it < options_.iterations; ++it) {
+        detail::solve_actuators<S>(actuators_, h, false, push);
+        detail::solve_contacts<S>(manifolds_, bodies_, joints_, actuators_, turned_, options_, h,
+                                  false);
+      }
       detail::accumulate_impulses<S>(manifolds_);
+      for (detail::Actuator<S>& a : actuators_) a.step_impulse += a.motor_impulse;
     }
     finish_kinematic();
     for (int i = 0; i < static_cast<int>(bodies_.size()); ++i) update_colliders(i);
@@ -457,6 +639,20 @@ class World {
     const Mat3 R = pose.rotation();
     if (!(R.transpose() * R).isApprox(Mat3::Identity(), 1e-6) || R.determinant() < 0.0)
       detail::throw_invalid_argument(argument, "expected a rotation (orthonormal, det +1)");
+  }
+  void require_actuator(int a, std::string_view argument) const {
+    if (a < 0 || a >= static_cast<int>(actuators_.size()))
+      detail::throw_invalid_argument(argument, "expected an actuator index in [0, " +
+                                                   std::to_string(actuators_.size()) + "), got " +
+                                                   std::to_string(a));
+  }
+  static void require_actuator_inertia(double inertia, std::string_view argument) {
+    require_positive(inertia, argument);
+    if (!(inertia >= static_cast<double>(min_length()) &&
+          inertia <= static_cast<double>(max_length())))
+      detail::throw_invalid_argument(argument, "expected a value in [" + number(min_length()) +
+                                                   ", " + number(max_length()) + "], got " +
+                                                   number(inertia));
   }
   void require_body(int body, std::string_view argument) const {
     if (body < 0 || body >= static_cast<int>(bodies_.size()))
@@ -564,6 +760,7 @@ class World {
       const RigidBody<S>& b = bodies_[i];
       saved_[i] = {b.x, b.v, b.w, b.q, b.R};
     }
+    for (std::size_t i = 0; i < actuators_.size(); ++i) saved_actuators_[i] = actuators_[i];
   }
   void restore_state() noexcept {
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
@@ -576,6 +773,7 @@ class World {
       if (b.type == BodyType::dynamic) b.inv_inertia = b.R * b.inv_inertia_local * b.R.transpose();
       update_colliders(static_cast<int>(i));
     }
+    for (std::size_t i = 0; i < actuators_.size(); ++i) actuators_[i] = saved_actuators_[i];
   }
   [[nodiscard]] bool state_ok() const noexcept {
     const S vmax = static_cast<S>(options_.max_speed);
@@ -587,6 +785,8 @@ class World {
       if (b.v.norm() > vmax || b.w.norm() > vmax) return false;
       if (b.x.cwiseAbs().maxCoeff() > xmax) return false;
     }
+    for (const detail::Actuator<S>& a : actuators_)
+      if (!std::isfinite(a.q) || !std::isfinite(a.qd) || std::abs(a.qd) > vmax) return false;
     return true;
   }
 
@@ -700,6 +900,9 @@ class World {
   std::vector<Collider<S>> colliders_;
   std::vector<Polytope<S>> polytopes_;
   std::vector<Manifold<S>> manifolds_;
+  std::vector<detail::BodyJoints<S>> joints_;  // one per body; count 0 unless actuators carry it
+  std::vector<detail::Actuator<S>> actuators_;
+  std::vector<detail::Actuator<S>> saved_actuators_;
   Status status_ = Status::success;
   double time_ = 0.0;
   long steps_ = 0;
