@@ -116,6 +116,52 @@ TEST_CASE("a hand scene exports as articulated MJCF: mocap hand, joints, motors,
 #endif
 }
 
+TEST_CASE("the human hand exports with every link where the built-in scene has it",
+          "[evaluation][mjcf]") {
+  // The hammer's handle across the palm (as bench_physics): a tree of five fingers, so the MJCF
+  // bodies (depth first) are not in the model's link order, and the keyframe must follow them.
+  Eigen::Isometry3d hand = Eigen::Isometry3d::Identity();
+  hand.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;
+  hand.translation() = Vec3(0, 0, 0.3);
+  ObjectSpec hammer;
+  hammer.shapes = {cylinder("", Pose{}, 0.016, 0.14),
+                   box("", at(0, 0, 0.1525), {0.06, 0.0125, 0.0125})};
+  Eigen::Isometry3d in_hand = Eigen::Isometry3d::Identity();
+  in_hand.linear() = Eigen::AngleAxisd(-pi / 2, Vec3::UnitX()).toRotationMatrix();
+  in_hand.translation() = Vec3(0.032, -0.06, 0.10);
+  hammer.pose = to_pose(hand * in_hand);
+  hammer.mass = 0.6;
+  Vec<models::human_hand.nq> q = Vec<models::human_hand.nq>::Zero();
+  q[17] = 0.3;
+  HandScene<models::human_hand> scene(hand, q, hammer);
+  REQUIRE(close_hand(scene).status == Status::success);
+  const std::string xml = to_mjcf(scene);
+  CHECK(static_cast<int>(count(xml, "<position ")) == models::human_hand.nq);
+  const auto& world = scene.world();
+  CHECK(static_cast<int>(count(xml, "<pair ")) == 2 * (world.collider_count() - 2));
+#ifdef TOPOGRASP_HAVE_MUJOCO
+  const MujocoScene ms(xml, 9);
+  const mjModel& m = ms.model();
+  CHECK(m.nu == models::human_hand.nq);
+  CHECK(m.ngeom == world.collider_count());
+  const mjData& d = ms.data();
+  int checked = 0;
+  for (int c = 0; c < world.collider_count(); ++c) {
+    const auto& col = world.collider(c);
+    if (world.body(col.body).type != BodyType::kinematic) continue;
+    const int gid = mj_name2id(&m, mjOBJ_GEOM, ("hand_" + std::to_string(c)).c_str());
+    REQUIRE(gid >= 0);
+    for (int k = 0; k < 3; ++k) CHECK(d.geom_xpos[3 * gid + k] == Approx(col.p[k]).margin(1e-9));
+    ++checked;
+  }
+  CHECK(checked == world.collider_count() - 2);
+  for (int i = 0; i < models::human_hand.nq; ++i)
+    CHECK(ms.joint_value(models::human_hand.joint_name(i)) ==
+          Approx(scene.joint_targets()[i]).margin(1e-12));
+  CHECK(ms.object_in_hand().isApprox(scene.object_in_hand(), 1e-12));
+#endif
+}
+
 TEST_CASE("the articulated export writes a model without effort data and refuses bad options",
           "[evaluation][mjcf]") {
   auto scene = test::sdh_bottle_scene();
