@@ -84,7 +84,12 @@ int main(int argc, char** argv) {
   bool committing = false;  // the output folder's commit has started
   try {
     const std::vector<std::string_view> args(argv + 1, argv + argc);
-    const CommandLine cli = parse_command_line(args);
+#ifdef TOPOGRASP_HAVE_MUJOCO
+    constexpr bool mujoco_linked = true;
+#else
+    constexpr bool mujoco_linked = false;
+#endif
+    const CommandLine cli = parse_command_line(args, mujoco_linked);
     if (cli.help) {
       std::fputs(command_line_usage().c_str(), stdout);
       return 0;

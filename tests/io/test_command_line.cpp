@@ -99,7 +99,7 @@ TEST_CASE("an option's value is never empty nor another option", "[io][command_l
   CHECK_THAT(error_of({"--out"}), Catch::StartsWith("--out: expected a value"));
   for (const std::string_view option :
        {"--objects", "--methods", "--out", "--jobs", "--seed", "--shard", "--max-hypotheses",
-        "--winding-reference", "--set", "--friction"}) {
+        "--winding-reference", "--set", "--friction", "--judge"}) {
     INFO(option);
     CHECK_THAT(error_of({option, ""}),
                Catch::StartsWith(std::string(option) + ": expected a value"));
@@ -203,12 +203,40 @@ TEST_CASE("every --set parameter is checked against its range before any work",
   }
 }
 
+TEST_CASE("--judge picks the simulator; its default follows whether MuJoCo is linked",
+          "[io][command_line]") {
+  const auto parse_with = [](std::initializer_list<std::string_view> args, bool mujoco) {
+    const std::vector<std::string_view> v(args);
+    return parse_command_line(v, mujoco).experiment.judge;
+  };
+  CHECK(parse_with({}, false) == Judge::builtin);
+  CHECK(parse_with({}, true) == Judge::both);
+  CHECK(parse_with({"--judge", "builtin"}, true) == Judge::builtin);
+  CHECK(parse_with({"--judge", "mujoco"}, true) == Judge::mujoco);
+  CHECK(parse_with({"--judge", "both"}, true) == Judge::both);
+  CHECK(parse_with({"--judge", "builtin"}, false) == Judge::builtin);
+  CHECK(to_string(Judge::mujoco) == "mujoco");
+}
+
+TEST_CASE("--judge refuses an unknown engine, and MuJoCo where it is not linked",
+          "[io][command_line][bad-input]") {
+  CHECK(error_of({"--judge", "physx"}) ==
+        "--judge: unknown judge \"physx\" (expected builtin, mujoco or both)");
+  CHECK(error_of({"--judge", "builtin", "--judge", "builtin"}) == "--judge: given twice");
+  for (const std::string_view j : {"mujoco", "both"}) {
+    const std::string e = error_of({"--judge", j});  // parse() says MuJoCo is not linked
+    INFO(e);
+    CHECK(e.rfind("--judge: this grasp_transfer was built without MuJoCo", 0) == 0);
+  }
+  CHECK(error_of({"--judge"}) == "--judge: expected a value");
+}
+
 TEST_CASE("the usage lists every option and every parameter with its range", "[io][command_line]") {
   const std::string usage = command_line_usage();
   for (const char* option :
        {"--objects", "--methods", "--out", "--force", "--jobs", "--seed", "--shard",
-        "--max-hypotheses", "--winding-reference", "--set", "--friction", "--figures", "--quiet",
-        "--help", "exit status", "results.json"}) {
+        "--max-hypotheses", "--winding-reference", "--set", "--friction", "--judge", "--figures",
+        "--quiet", "--help", "exit status", "results.json"}) {
     INFO(option);
     CHECK(usage.find(option) != std::string::npos);
   }
@@ -233,6 +261,8 @@ TEST_CASE("no argument list makes the parser throw anything but invalid_argument
                                                 "--max-hypotheses",
                                                 "--winding-reference",
                                                 "--set",
+                                                "--judge",
+                                                "mujoco",
                                                 "--figures",
                                                 "--quiet",
                                                 "--force",

@@ -22,6 +22,23 @@
 
 namespace topograsp {
 
+/// Which simulator judges a grasp's stability: the built-in stepper, MuJoCo (io/mujoco_scene.hpp,
+/// only where MuJoCo is linked), or both.
+enum class Judge : std::uint8_t { builtin, mujoco, both };
+
+/// The name of \p j ("builtin", "mujoco", "both").
+[[nodiscard]] constexpr std::string_view to_string(Judge j) noexcept {
+  switch (j) {
+    case Judge::builtin:
+      return "builtin";
+    case Judge::mujoco:
+      return "mujoco";
+    case Judge::both:
+      return "both";
+  }
+  return "unknown";
+}
+
 /// What to run.
 struct ExperimentOptions {
   std::vector<GraspObject> objects;     ///< default: the paper's hammer and bottle
@@ -32,6 +49,9 @@ struct ExperimentOptions {
   int shard_count = 1;
   int max_hypotheses = 0;  ///< if > 0, only the first this many hypotheses of each object
   TransferOptions transfer{};
+  /// Which engine judges each grasp (grasp_transfer --judge). Not read by run_experiment yet:
+  /// every grasp is judged by the built-in stepper until the MuJoCo judge is wired in (issue 13).
+  Judge judge = Judge::builtin;
 };
 
 /// The numbers of one method on one object.

@@ -119,9 +119,14 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
 /// unsigned 64-bit integer, --friction a number in (0, 10]), an unknown, empty or repeated
 /// object or method, an unknown
 /// --winding-reference, a --set that is not NAME=VALUE, names an unknown parameter, sets one twice
-/// or a value outside its range (transfer_parameters), and an --out with a NUL character.
-[[nodiscard]] inline CommandLine parse_command_line(std::span<const std::string_view> args) {
+/// or a value outside its range (transfer_parameters), an --out with a NUL character, an unknown
+/// --judge, and --judge mujoco or both when \p mujoco_linked is false. \p mujoco_linked says
+/// whether the program was built with MuJoCo (TOPOGRASP_HAVE_MUJOCO); it sets the default of
+/// --judge: both with MuJoCo, builtin without.
+[[nodiscard]] inline CommandLine parse_command_line(std::span<const std::string_view> args,
+                                                    bool mujoco_linked = false) {
   CommandLine cli;
+  cli.experiment.judge = mujoco_linked ? Judge::both : Judge::builtin;
   std::string_view objects_list = "hammer,bottle";
   std::string_view methods_list = "topological,transplant,fingertip";
   std::vector<std::string_view> seen;  // value options given so far
@@ -145,8 +150,8 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
       continue;
     }
     constexpr std::string_view value_options[] = {
-        "--objects", "--methods",           "--out", "--jobs",    "--seed", "--max-hypotheses",
-        "--shard",   "--winding-reference", "--set", "--friction"};
+        "--objects", "--methods",           "--out", "--jobs",     "--seed", "--max-hypotheses",
+        "--shard",   "--winding-reference", "--set", "--friction", "--judge"};
     bool known = false;
     for (const std::string_view o : value_options) known = known || o == arg;
     if (!known)
@@ -210,6 +215,15 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
       cli.experiment.transfer.winding_reference =
           enum_from_name(value, {WindingReference::centre_of_mass, WindingReference::nearest_point},
                          arg, "reference");
+    } else if (arg == "--judge") {
+      cli.experiment.judge =
+          enum_from_name(value, {Judge::builtin, Judge::mujoco, Judge::both}, arg, "judge");
+      if (cli.experiment.judge != Judge::builtin && !mujoco_linked)
+        detail::throw_invalid_argument(arg,
+                                       "this grasp_transfer was built without MuJoCo, so "
+                                       "only --judge builtin is available (install MuJoCo "
+                                       "2.2, e.g. Debian's libmujoco-dev, and configure "
+                                       "again)");
     } else {  // --set
       const std::size_t eq = value.find('=');
       if (eq == std::string_view::npos || eq == 0 || eq + 1 == value.size())
@@ -274,6 +288,8 @@ options:
   --friction MU    one Coulomb coefficient for every hand-object pair, in (0, 10], for a friction
                    sensitivity run (default: each pair from the table of materials,
                    docs/objects.md)
+  --judge J        which simulator judges the grasps: builtin, mujoco or both (default both
+                   when built with MuJoCo, else builtin; mujoco and both need MuJoCo)
   --set NAME=VALUE  set a transfer parameter (repeatable, each name once; the names, defaults
                    and valid ranges are listed below, their meaning in docs/transfer.md)
   --figures        also write DIR/figures/*.svg and DIR/index.html (Fig. 5-7, Table I)

@@ -1,18 +1,154 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
-/// MJCF export of a physics scene, so a grasp can be re-checked in MuJoCo (2.2 or later).
+/// MJCF export of a physics scene, so a grasp can be re-checked in MuJoCo (2.2 or later): a World
+/// with its hand frozen, or a hand scene articulated (joints, motors, couplings, the grasp as a
+/// keyframe).
 #pragma once
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <iomanip>
 #include <ostream>
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <vector>
 
+#include <topograsp/core/error.hpp>
 #include <topograsp/evaluation/hand_scene.hpp>
 #include <topograsp/physics/world.hpp>
 
 namespace topograsp {
+
+/// The settings of the articulated MJCF export of a hand scene (write_mjcf(os, HandScene, ...)).
+/// Every value has a physical or numerical reason, given with it; docs/evaluation.md gathers them.
+struct MjcfOptions {
+  /// The largest MuJoCo time step (s): the scene's own time step is split into the fewest equal
+  /// MuJoCo steps not longer than this. Grasps need 2 ms or less (MuJoCo's contacts are soft over
+  /// a few steps; longer steps let a held object sink and creep). Default 0.002.
+  double max_time_step = 0.002;
+  /// MuJoCo's impratio: the ratio of frictional to normal constraint impedance. 10 or more with
+  /// elliptic cones keeps a held object from creeping out of the grip. Default 10.
+  double impratio = 10.0;
+  /// The joint error (rad) at which a revolute position actuator reaches its force limit:
+  /// kp = force limit / hold_angle. Small, so that a finger pressed against the object by a
+  /// target past it pushes with its full allowed torque, as the built-in motors do. Default 0.02
+  /// (1.1 degrees).
+  double hold_angle = 0.02;
+  /// The same for a prismatic joint (m). Default 0.002.
+  double hold_distance = 0.002;
+  /// The actuator's damping time (s): each actuated joint gets damping kv = kp * damping_time
+  /// (MuJoCo 2.2's position actuator has no kv of its own; the joint's damping is integrated
+  /// implicitly). Default 0.01.
+  double damping_time = 0.01;
+  /// The rotor inertia (kg m^2 or kg) written for a joint whose model gives none
+  /// (LinkSpec::armature 0): without it a light finger link on a stiff position servo is beyond
+  /// what a 2 ms explicit spring step resolves. Default 0.001.
+  double default_armature = 0.001;
+  /// Contacts are reported (mjData::contact, MujocoScene::hand_contacts) out to this distance (m)
+  /// and act only on overlap: each pair gets margin = gap = this value, so MuJoCo's constraint
+  /// starts at distance 0 exactly as without it. Default 0.005.
+  double report_distance = 0.005;
+  /// Overrides the effort limit of each configuration entry (N m or N, dim nq, each > 0); empty:
+  /// the model's LinkSpec::effort.
+  std::vector<double> effort;
+};
+
+namespace detail {
+
+inline void write_mjcf_vec3(std::ostream& os, const char* attribute, const Vec3& v) {
+  os << ' ' << attribute << "=\"" << v.x() << ' ' << v.y() << ' ' << v.z() << '"';
+}
+
+inline void write_mjcf_shape(std::ostream& os, const ShapeSpec& s) {
+  os << " type=\"" << to_string(s.type) << "\" size=\"";
+  switch (s.type) {
+    case ShapeType::sphere:
+      os << s.size[0];
+      break;
+    case ShapeType::capsule:
+    case ShapeType::cylinder:
+      os << s.size[0] << ' ' << s.size[1];
+      break;
+    case ShapeType::box:
+      os << s.size[0] << ' ' << s.size[1] << ' ' << s.size[2];
+      break;
+  }
+  os << '"';
+}
+
+// The radius of a sphere about the shape's centre that holds it.
+inline double mjcf_shape_radius(const ShapeSpec& s) {
+  switch (s.type) {
+    case ShapeType::sphere:
+      return s.size[0];
+    case ShapeType::capsule:
+      return s.size[0] + s.size[1];
+    case ShapeType::cylinder:
+      return std::hypot(s.size[0], s.size[1]);
+    case ShapeType::box:
+      return std::hypot(s.size[0], s.size[1], s.size[2]);
+  }
+  return 0.0;
+}
+
+/// What the articulated export reads of a hand scene's motors: the joints' actual values, their
+/// targets, each configuration entry's effort limit (N m or N) and the fraction of it the motors
+/// may give now.
+template <int NQ>
+struct MjcfMotorState {
+  Vec<NQ> q = Vec<NQ>::Zero();
+  Vec<NQ> target = Vec<NQ>::Zero();
+  std::array<double, static_cast<std::size_t>(NQ)> effort{};
+  double fraction = 1.0;
+};
+
+/// Reads the motor state of \p scene: the joints' positions and targets, the model's efforts
+/// (or options.effort when given) and the fraction of them the motors may give now.
+template <const auto& M, class S>
+MjcfMotorState<M.nq> mjcf_motor_state(const HandScene<M, S>& scene, const MjcfOptions& options) {
+  MjcfMotorState<M.nq> out;
+  out.q = scene.joint_positions();
+  out.target = scene.joint_targets();
+  out.fraction = scene.effort_fraction();
+  for (int i = 0; i < M.nq; ++i)
+    out.effort[static_cast<std::size_t>(i)] = options.effort.empty()
+                                                  ? M.joint_spec(i).effort
+                                                  : options.effort[static_cast<std::size_t>(i)];
+  return out;
+}
+
+inline void require_mjcf_options(const MjcfOptions& o, int nq) {
+  require_positive(o.max_time_step, "options.max_time_step");
+  require_positive(o.impratio, "options.impratio");
+  require_positive(o.hold_angle, "options.hold_angle");
+  require_positive(o.hold_distance, "options.hold_distance");
+  require_non_negative(o.damping_time, "options.damping_time");
+  require_non_negative(o.default_armature, "options.default_armature");
+  require_non_negative(o.report_distance, "options.report_distance");
+  if (!o.effort.empty() && static_cast<int>(o.effort.size()) != nq)
+    throw_invalid_argument("options.effort", "expected " + std::to_string(nq) +
+                                                 " entries (one per configuration entry) or none, "
+                                                 "got " +
+                                                 std::to_string(o.effort.size()));
+  for (std::size_t i = 0; i < o.effort.size(); ++i)
+    require_positive(o.effort[i], "options.effort[" + std::to_string(i) + "]");
+}
+
+}  // namespace detail
+
+/// The number of MuJoCo steps that make one step of \p time_step (s) with steps of at most
+/// \p max_time_step (s): the fewest such steps (at least 1).
+[[nodiscard]] inline int mjcf_substeps(double time_step, double max_time_step) {
+  require_positive(time_step, "time_step");
+  require_positive(max_time_step, "max_time_step");
+  const double n = std::ceil(time_step / max_time_step * (1.0 - 1e-12));
+  if (!(n <= 1e6))
+    detail::throw_invalid_argument("max_time_step", "expected at least time_step / 1e6");
+  return std::max(1, static_cast<int>(n));
+}
 
 namespace detail {
 
@@ -120,18 +256,237 @@ void write_mjcf(std::ostream& os, const World<S>& world, const Eigen::Isometry3d
   os.precision(precision);
 }
 
-/// Writes the hand scene \p scene (hand frame at the model's root link) as MJCF; see
-/// write_mjcf(std::ostream&, const World<S>&, ...).
+/// Writes \p scene as an articulated MJCF model that MuJoCo 2.2 loads and that opens holding the
+/// object (the scene contract of docs/evaluation.md):
+/// - `<option>`: the scene's time step split into mjcf_substeps(time_step, max_time_step) equal
+///   steps, the scene's gravity, `cone="elliptic"`, options.impratio, `integrator="implicit"`;
+/// - a mocap body named `hand` at the hand frame (the model's root link) carrying the root's
+///   shapes and, nested, every other link as a body (named as the link) at its joint origin,
+///   with its joint (hinge or slide about the model's axis, `range` = limits, `armature` =
+///   LinkSpec::armature or options.default_armature when 0, `damping` = kv) and its shapes;
+/// - link inertia: LinkSpec mass at LinkSpec com with the inertia of a uniform sphere of that
+///   mass reaching the link's farthest shape point; a link of mass 0 (no data) gets its inertia
+///   from its shapes at MuJoCo's default density (1000 kg/m^3), a link with neither is bounded by
+///   `boundmass` 1e-4 kg and `boundinertia` 1e-9 kg m^2;
+/// - one `<position>` actuator per configuration entry on its joint, `ctrlrange` = the joint
+///   limits, `forcerange` = +-(effort x fraction) with `kp` = effort x fraction / options.
+///   hold_angle (hold_distance for prismatic joints); with effort 0 (the model gives none and
+///   options.effort is empty) the actuator is written without a force range and with kp = 1 / hold
+///   angle (1 N m at hold_angle), and an XML comment says so;
+/// - mimic joints as `<equality><joint joint1="mimic" joint2="source" polycoef="offset
+///   multiplier 0 0 0"/>`;
+/// - the object as a body named `object` with a free joint, its World mass, centre of mass and
+///   full inertia, and its shapes;
+/// - no contact by geom type (contype = conaffinity = 0): one `<contact><pair>` per (hand shape,
+///   object shape) with the World's pair friction (World::manifolds()[k].friction, so the
+///   coefficient is exact whatever MuJoCo's combination rule), condim 4 with torsional friction
+///   mu x torsional_friction_radius (3 without), margin = gap = options.report_distance;
+/// - a site named `palm` at the model's palm centre (a hand model only);
+/// - `<keyframe><key name="grasp">` with qpos (the joints' values and the object's pose), ctrl
+///   (the targets, clamped to the limits), mpos and mquat (the hand pose).
+/// Geoms are named `hand_<collider>` (the World's collider index) and `object_<k>`. Throws
+/// topograsp::invalid_argument naming the option for a bad option (non-positive max_time_step,
+/// impratio, hold_angle or hold_distance; negative damping_time, default_armature or
+/// report_distance; options.effort of the wrong size or with an entry that is not positive).
 template <const auto& M, class S>
-void write_mjcf(std::ostream& os, const HandScene<M, S>& scene) {
-  write_mjcf(os, scene.world(), scene.hand_pose(), M.name.view());
+void write_mjcf(std::ostream& os, const HandScene<M, S>& scene, const MjcfOptions& options) {
+  using ModelType = std::remove_cvref_t<decltype(M)>;
+  constexpr int NL = static_cast<int>(ModelType::n_links);
+  detail::require_mjcf_options(options, M.nq);
+  const auto motors = detail::mjcf_motor_state(scene, options);
+  const World<S>& world = scene.world();
+  const StepperOptions& so = world.options();
+  const int substeps = mjcf_substeps(so.time_step, options.max_time_step);
+  const double torsion = so.torsional_friction_radius;
+
+  const auto flags = os.flags();
+  const auto precision = os.precision();
+  os << std::setprecision(17);  // round trip: the keyframe reproduces the scene exactly
+  os << "<mujoco model=\"" << M.name.view() << "\">\n";
+  os << "  <compiler angle=\"radian\" inertiafromgeom=\"auto\" boundmass=\"1e-4\" "
+        "boundinertia=\"1e-9\"/>\n";
+  os << "  <option timestep=\"" << so.time_step / substeps << '"';
+  detail::write_mjcf_vec3(os, "gravity", world.gravity().template cast<double>());
+  os << " cone=\"elliptic\" impratio=\"" << options.impratio << "\" integrator=\"implicit\"/>\n";
+  os << "  <size nkey=\"1\"/>\n";
+  os << "  <default>\n    <geom contype=\"0\" conaffinity=\"0\"/>\n  </default>\n";
+
+  // Per joint: kp, kv and the force limit (0: none) of the actuator that drives it.
+  std::array<double, static_cast<std::size_t>(M.nq)> kp{}, limit{};
+  for (int i = 0; i < M.nq; ++i) {
+    const auto u = static_cast<std::size_t>(i);
+    const double hold =
+        M.joint_spec(i).type == JointType::prismatic ? options.hold_distance : options.hold_angle;
+    limit[u] = motors.effort[u] * motors.fraction;
+    kp[u] = (limit[u] > 0.0 ? limit[u] : 1.0) / hold;
+  }
+  const auto joint_value = [&](int l) {
+    const Link& link = M.links[static_cast<std::size_t>(l)];
+    const double q = motors.q[link.q];
+    return link.spec.mimic.empty() ? q : link.spec.multiplier * q + link.spec.offset;
+  };
+  // Bodies depth first; MuJoCo numbers the joints in this order, so the keyframe follows it.
+  std::vector<int> joint_order;
+  std::vector<std::string> hand_geoms;
+  const auto write_body = [&](const auto& self, int l, int depth) -> void {
+    const Link& link = M.links[static_cast<std::size_t>(l)];
+    const std::string indent(static_cast<std::size_t>(2 * depth + 4), ' ');
+    if (l == 0) {
+      os << indent << "<body name=\"hand\" mocap=\"true\"";
+      detail::write_mjcf_pose(os, scene.hand_pose());
+      os << ">\n";
+    } else {
+      os << indent << "<body name=\"" << link.spec.name.view() << '"';
+      detail::write_mjcf_pose(os, link.spec.origin.isometry());
+      os << ">\n";
+    }
+    const std::string in = indent + "  ";
+    if (l != 0 && link.spec.mass > 0.0) {
+      const Vec3 c(link.spec.com[0], link.spec.com[1], link.spec.com[2]);
+      double r = 0.0;
+      for (const Shape& s : M.shapes)
+        if (s.link == l)
+          r = std::max(r, (s.spec.pose.isometry().translation() - c).norm() +
+                              detail::mjcf_shape_radius(s.spec));
+      if (!(r > 0.0)) r = 0.01;  // no shapes: a 1 cm sphere
+      const double I = 0.4 * link.spec.mass * r * r;
+      os << in << "<inertial";
+      detail::write_mjcf_vec3(os, "pos", c);
+      os << " mass=\"" << link.spec.mass << "\" diaginertia=\"" << I << ' ' << I << ' ' << I
+         << "\"/>\n";
+    }
+    if (link.spec.type != JointType::fixed) {
+      joint_order.push_back(l);
+      const auto src = static_cast<std::size_t>(link.q);
+      const LinkSpec& owner = M.joint_spec(link.q);
+      const double armature = owner.armature > 0.0 ? owner.armature : options.default_armature;
+      const double scale = link.spec.mimic.empty() ? 1.0 : std::abs(link.spec.multiplier);
+      os << in << "<joint name=\"" << link.spec.name.view() << "\" type=\""
+         << (link.spec.type == JointType::prismatic ? "slide" : "hinge") << '"';
+      detail::write_mjcf_vec3(os, "axis", Vec3(link.axis[0], link.axis[1], link.axis[2]));
+      os << " limited=\"true\" range=\"" << link.spec.lower << ' ' << link.spec.upper
+         << "\" armature=\"" << armature << "\" damping=\""
+         << kp[src] * options.damping_time * scale << "\"/>\n";
+    }
+    const int body = scene.link_body(l);
+    if (body >= 0) {
+      const RigidBody<S>& b = world.body(body);
+      for (int c = b.first_collider; c < b.first_collider + b.n_colliders; ++c) {
+        hand_geoms.push_back("hand_" + std::to_string(c));
+        os << in << "<geom name=\"" << hand_geoms.back() << '"';
+        detail::write_mjcf_shape(os, world.collider(c).spec);
+        detail::write_mjcf_pose(os, world.collider(c).spec.pose.isometry());
+        os << "/>\n";
+      }
+    }
+    if constexpr (M.is_hand())
+      if (M.palm.link == l) {
+        os << in << "<site name=\"palm\"";
+        detail::write_mjcf_vec3(os, "pos",
+                                Vec3(M.palm.offset[0], M.palm.offset[1], M.palm.offset[2]));
+        os << " size=\"0.005\"/>\n";
+      }
+    for (int j = l + 1; j < NL; ++j)
+      if (M.links[static_cast<std::size_t>(j)].parent == l) self(self, j, depth + 1);
+    os << indent << "</body>\n";
+  };
+  os << "  <worldbody>\n";
+  write_body(write_body, 0, 0);
+  const RigidBody<S>& object = world.body(scene.object_body());
+  os << "    <body name=\"object\"";
+  detail::write_mjcf_pose(os, object.pose());
+  os << ">\n      <joint name=\"object_free\" type=\"free\"/>\n";
+  {
+    const Mat3 I = object.inertia.template cast<double>();
+    os << "      <inertial";
+    detail::write_mjcf_vec3(os, "pos", object.local_com.template cast<double>());
+    os << " mass=\"" << static_cast<double>(object.mass) << "\" fullinertia=\"" << I(0, 0) << ' '
+       << I(1, 1) << ' ' << I(2, 2) << ' ' << I(0, 1) << ' ' << I(0, 2) << ' ' << I(1, 2)
+       << "\"/>\n";
+  }
+  for (int k = 0; k < object.n_colliders; ++k) {
+    const auto& spec = world.collider(object.first_collider + k).spec;
+    os << "      <geom name=\"object_" << k << '"';
+    detail::write_mjcf_shape(os, spec);
+    detail::write_mjcf_pose(os, spec.pose.isometry());
+    os << "/>\n";
+  }
+  os << "    </body>\n  </worldbody>\n";
+
+  os << "  <contact>\n";
+  for (const Manifold<S>& m : world.manifolds()) {
+    const bool a_is_object = m.body_a == scene.object_body();
+    if (!a_is_object && m.body_b != scene.object_body()) continue;
+    const int hand_collider = a_is_object ? m.collider_b : m.collider_a;
+    const int object_collider = (a_is_object ? m.collider_a : m.collider_b) - object.first_collider;
+    if (world.body(world.collider(hand_collider).body).type != BodyType::kinematic) continue;
+    const double mu = static_cast<double>(m.friction);
+    os << "    <pair geom1=\"hand_" << hand_collider << "\" geom2=\"object_" << object_collider
+       << "\" condim=\"" << (torsion > 0.0 ? 4 : 3) << "\" friction=\"" << mu << ' ' << mu << ' '
+       << mu * torsion << " 0.0001 0.0001\" margin=\"" << options.report_distance << "\" gap=\""
+       << options.report_distance << "\"/>\n";
+  }
+  os << "  </contact>\n";
+
+  bool mimic = false;
+  for (const Link& l : M.links)
+    mimic = mimic || (l.spec.type != JointType::fixed && !l.spec.mimic.empty());
+  if (mimic) {
+    os << "  <equality>\n";
+    for (const Link& l : M.links)
+      if (l.spec.type != JointType::fixed && !l.spec.mimic.empty())
+        os << "    <joint joint1=\"" << l.spec.name.view() << "\" joint2=\"" << l.spec.mimic.view()
+           << "\" polycoef=\"" << l.spec.offset << ' ' << l.spec.multiplier << " 0 0 0\"/>\n";
+    os << "  </equality>\n";
+  }
+
+  os << "  <actuator>\n";
+  for (int i = 0; i < M.nq; ++i) {
+    const auto u = static_cast<std::size_t>(i);
+    const LinkSpec& j = M.joint_spec(i);
+    if (!(limit[u] > 0.0))
+      os << "    <!-- no effort limit for " << j.name.view()
+         << " (LinkSpec::effort is 0): kp = 1 / hold, no force range -->\n";
+    os << "    <position name=\"" << j.name.view() << "\" joint=\"" << j.name.view() << "\" kp=\""
+       << kp[u] << "\" ctrllimited=\"true\" ctrlrange=\"" << j.lower << ' ' << j.upper << '"';
+    if (limit[u] > 0.0)
+      os << " forcelimited=\"true\" forcerange=\"" << -limit[u] << ' ' << limit[u] << '"';
+    os << "/>\n";
+  }
+  os << "  </actuator>\n";
+
+  os << "  <keyframe>\n    <key name=\"grasp\" qpos=\"";
+  for (const int l : joint_order) os << joint_value(l) << ' ';
+  const Eigen::Isometry3d T_object = object.pose();
+  const Eigen::Quaterniond q_object(T_object.linear());
+  os << T_object.translation().x() << ' ' << T_object.translation().y() << ' '
+     << T_object.translation().z() << ' ' << q_object.w() << ' ' << q_object.x() << ' '
+     << q_object.y() << ' ' << q_object.z() << "\" ctrl=\"";
+  for (int i = 0; i < M.nq; ++i) {
+    const LinkSpec& j = M.joint_spec(i);
+    os << (i > 0 ? " " : "") << std::clamp(motors.target[i], j.lower, j.upper);
+  }
+  const Eigen::Quaterniond q_hand(scene.hand_pose().linear());
+  os << '"';
+  detail::write_mjcf_vec3(os, "mpos", scene.hand_pose().translation());
+  os << " mquat=\"" << q_hand.w() << ' ' << q_hand.x() << ' ' << q_hand.y() << ' ' << q_hand.z()
+     << "\"/>\n  </keyframe>\n</mujoco>\n";
+  os.flags(flags);
+  os.precision(precision);
 }
 
-/// The MJCF text of \p scene.
+/// Writes the hand scene \p scene as articulated MJCF with default MjcfOptions; see
+/// write_mjcf(std::ostream&, const HandScene<M, S>&, const MjcfOptions&).
 template <const auto& M, class S>
-[[nodiscard]] std::string to_mjcf(const HandScene<M, S>& scene) {
+void write_mjcf(std::ostream& os, const HandScene<M, S>& scene) {
+  write_mjcf(os, scene, MjcfOptions{});
+}
+
+/// The articulated MJCF text of \p scene (write_mjcf; throws as it does).
+template <const auto& M, class S>
+[[nodiscard]] std::string to_mjcf(const HandScene<M, S>& scene, const MjcfOptions& options = {}) {
   std::ostringstream os;
-  write_mjcf(os, scene);
+  write_mjcf(os, scene, options);
   return os.str();
 }
 

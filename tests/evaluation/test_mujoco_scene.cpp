@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// MujocoScene, the second judge: the exported grasp loads, opens as the built-in scene has it,
+// holds a box by the SDH's motors and drops it when their torque limit is too small; gravity per
+// scene; copies are independent. Only with MuJoCo (TOPOGRASP_HAVE_MUJOCO).
+#ifdef TOPOGRASP_HAVE_MUJOCO
+#include "evaluation_test_support.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <catch2/catch.hpp>
+#include <topograsp/io/mujoco_scene.hpp>
+
+#include "support/throws.hpp"
+
+using namespace topograsp;
+
+namespace {
+
+// The SDH's side grasp (test::sdh_side_pose) of a 0.3 kg box, 6 x 6 x 10 cm, closed by
+// close_hand; \p open: the hand open and the box 10 cm beyond its fingers, touching nothing.
+HandScene<models::schunk_sdh> sdh_box_scene(bool open = false) {
+  const Eigen::Isometry3d hand = test::sdh_side_pose();
+  ObjectSpec o;
+  o.shapes = {box("", Pose{}, {0.03, 0.03, 0.05})};
+  o.pose = to_pose(
+      hand * test::z_along(Eigen::Vector3d::UnitY(), Eigen::Vector3d(0, 0, open ? 0.35 : 0.15)));
+  o.mass = 0.3;
+  Vec<7> q;
+  q << 0.0, -0.6, 0.3, -0.6, 0.3, -0.6, 0.3;
+  HandScene<models::schunk_sdh> scene(hand, q, o);
+  if (!open) REQUIRE(close_hand(scene).status == Status::success);
+  return scene;
+}
+
+// Motors of \p effort (N m) on every SDH joint.
+MjcfOptions sdh_motors(double effort) {
+  MjcfOptions o;
+  o.effort.assign(7, effort);
+  return o;
+}
+
+double moved(const MujocoScene& s, const Eigen::Isometry3d& start) {
+  return (s.object_in_hand().translation() - start.translation()).norm();
+}
+
+}  // namespace
+
+TEST_CASE("the exported grasp opens in MuJoCo as the built-in scene has it",
+          "[evaluation][mujoco]") {
+  const auto scene = sdh_box_scene();
+  const MujocoScene ms(scene, sdh_motors(1.0));
+  CHECK(ms.substeps() == 9);
+  CHECK(ms.time_step() == Approx(scene.time_step()));
+  CHECK(ms.object_mass() == Approx(0.3));
+  CHECK(ms.gravity().isApprox(scene.gravity()));
+  CHECK(ms.hand_pose().isApprox(scene.hand_pose()));
+  // The keyframe: the joints at the built-in's values (the mirror knuckle through its coupling).
+  for (int i = 0; i < 7; ++i)
+    CHECK(ms.joint_value(models::schunk_sdh.joint_name(i)) ==
+          Approx(scene.joint_targets()[i]).margin(1e-12));
+  CHECK(ms.joint_value("knuckle_2") == Approx(scene.joint_targets()[0]).margin(1e-12));
+  CHECK(ms.object_in_hand().isApprox(scene.object_in_hand(), 1e-12));
+  CHECK((ms.object_com() - scene.object_com()).norm() < 1e-12);
+  CHECK((ms.palm_centre() - scene.palm_centre()).norm() < 1e-12);
+  CHECK(ms.hand_contacts(0.001) > 0);
+  CHECK(ms.deepest_penetration() > 0.0);
+}
+
+TEST_CASE("a box held by the SDH's motors stays in MuJoCo; motors too weak drop it",
+          "[evaluation][mujoco]") {
+  const auto scene = sdh_box_scene();
+  const double weight = 0.3 * 9.81;
+  SECTION("1 N m per joint holds the box for 2 s with gravity on") {
+    MujocoScene ms(scene, sdh_motors(1.0));
+    const Eigen::Isometry3d start = ms.object_in_hand();
+    for (int i = 0; i < 120; ++i) REQUIRE(ms.step() == Status::success);
+    CHECK(moved(ms, start) < 0.01);
+    CHECK(ms.hand_contacts(0.001) >= 3);
+    // The grip comes from the motors: more than the weight, bounded by what they can give.
+    CHECK(ms.hand_force() > weight);
+    CHECK(ms.deepest_penetration() < 0.005);
+  }
+  SECTION("0.01 N m per joint (0.1 N at a 10 cm finger) cannot hold 2.9 N: the box falls") {
+    MujocoScene ms(scene, sdh_motors(0.01));
+    const Eigen::Isometry3d start = ms.object_in_hand();
+    for (int i = 0; i < 120; ++i) REQUIRE(ms.step() == Status::success);
+    CHECK(moved(ms, start) > 0.5);
+    CHECK(ms.hand_contacts(0.001) == 0);
+    CHECK(ms.hand_force() == 0.0);
+  }
+}
+
+TEST_CASE("MuJoCo scene gravity moves a free object along it; copies are independent",
+          "[evaluation][mujoco]") {
+  const auto built_in = sdh_box_scene(true);
+  MujocoScene ms(built_in, sdh_motors(1.0));
+  REQUIRE(ms.hand_contacts(0.001) == 0);
+  const double g = built_in.gravity().norm();
+  REQUIRE(built_in.gravity().isApprox(Vec3(0.0, 0.0, -g)));
+  const Vec3 c0 = ms.object_com();
+  MujocoScene copy = ms;
+  copy.set_gravity(Vec3(9.81, 0.0, 0.0));
+  CHECK(ms.gravity() == built_in.gravity());
+  for (int i = 0; i < 30; ++i) REQUIRE(copy.step() == Status::success);
+  // 0.5 s of free fall along +x: 1.23 m (MuJoCo's implicit Euler, to 2 %).
+  const Vec3 d = copy.object_com() - c0;
+  CHECK(d.x() == Approx(0.5 * 9.81 * 0.25).epsilon(0.02));
+  CHECK(std::abs(d.y()) < 1e-9);
+  CHECK(std::abs(d.z()) < 1e-9);
+  // The original did not move while its copy fell, and falls down when stepped.
+  CHECK((ms.object_com() - c0).norm() == 0.0);
+  for (int i = 0; i < 30; ++i) REQUIRE(ms.step() == Status::success);
+  CHECK((ms.object_com() - c0).z() == Approx(-0.5 * g * 0.25).epsilon(0.02));
+  // A copy continues exactly as its original (mj_copyData copies the whole state).
+  MujocoScene twin = copy;
+  copy.set_hand_pose(copy.hand_pose() * Eigen::Translation3d(0.0, 0.01, 0.0));
+  twin.set_hand_pose(copy.hand_pose());
+  for (int i = 0; i < 5; ++i) {
+    REQUIRE(copy.step() == Status::success);
+    REQUIRE(twin.step() == Status::success);
+  }
+  CHECK(twin.object_com() == copy.object_com());
+  // Assignment copies too.
+  twin = ms;
+  CHECK(twin.object_com() == ms.object_com());
+  CHECK(twin.gravity() == ms.gravity());
+}
+
+TEST_CASE("the hand moves to the pose set, interpolated over the step", "[evaluation][mujoco]") {
+  MujocoScene ms(sdh_box_scene(true), sdh_motors(1.0));
+  ms.set_gravity(Vec3::Zero());
+  Eigen::Isometry3d target = ms.hand_pose();
+  target.translation() += Vec3(0.0, 0.0, 0.05);
+  target.linear() = Eigen::AngleAxisd(0.3, Vec3::UnitZ()).toRotationMatrix() * target.linear();
+  ms.set_hand_pose(target);
+  REQUIRE(ms.step() == Status::success);
+  const mjData& d = ms.data();
+  CHECK((Vec3(d.mocap_pos[0], d.mocap_pos[1], d.mocap_pos[2]) - target.translation()).norm() <
+        1e-12);
+  const int hand = mj_name2id(&ms.model(), mjOBJ_BODY, "hand");
+  CHECK((Vec3(d.xpos[3 * hand], d.xpos[3 * hand + 1], d.xpos[3 * hand + 2]) - target.translation())
+            .norm() < 1e-12);
+}
+
+TEST_CASE("MujocoScene refuses bad input with readable errors", "[evaluation][mujoco]") {
+  // MuJoCo's own error text comes through.
+  try {
+    MujocoScene bad("<mujoco><worldbody><geom type=\"nonsense\"/></worldbody></mujoco>");
+    FAIL("loaded a bad model");
+  } catch (const invalid_argument& e) {
+    const std::string what = e.what();
+    INFO(what);
+    CHECK(what.rfind("mjcf: MuJoCo did not load it: ", 0) == 0);
+    CHECK(what.find("nonsense") != std::string::npos);
+  }
+  test::check_throws_naming([] { MujocoScene s("not xml at all"); }, "mjcf");
+  const std::string no_hand =
+      "<mujoco><worldbody><body name=\"object\"><freejoint/><geom size=\"0.1\"/></body>"
+      "</worldbody></mujoco>";
+  test::check_throws_naming([&] { MujocoScene s(no_hand); }, "mjcf");
+  const std::string no_object =
+      "<mujoco><worldbody><body name=\"hand\" mocap=\"true\"><geom size=\"0.1\"/></body>"
+      "</worldbody></mujoco>";
+  test::check_throws_naming([&] { MujocoScene s(no_object); }, "mjcf");
+  const std::string minimal =
+      "<mujoco><worldbody><body name=\"hand\" mocap=\"true\"><geom size=\"0.1\"/></body>"
+      "<body name=\"object\" pos=\"1 0 0\"><freejoint/><geom size=\"0.1\"/></body>"
+      "</worldbody></mujoco>";
+  test::check_throws_naming([&] { MujocoScene s(minimal, 0); }, "substeps");
+  MujocoScene s(minimal);  // the contract alone is enough: no keyframe, no palm site
+  CHECK(s.palm_centre() == Vec3::Zero());
+  test::check_throws_naming([&] { s.set_gravity(Vec3(0.0, std::nan(""), 0.0)); }, "g");
+  Eigen::Isometry3d skew = Eigen::Isometry3d::Identity();
+  skew.linear()(0, 1) = 0.5;
+  test::check_throws_naming([&] { s.set_hand_pose(skew); }, "pose");
+  Eigen::Isometry3d nan = Eigen::Isometry3d::Identity();
+  nan.translation().x() = std::nan("");
+  test::check_throws_naming([&] { s.set_hand_pose(nan); }, "pose");
+  test::check_throws_naming([&] { (void)s.joint_value("no_such_joint"); }, "name");
+  // A hand whose model gives no effort limits cannot be judged without options.effort.
+  if (models::schunk_sdh.joint_spec(1).effort == 0.0)
+    test::check_throws_naming([] { MujocoScene j(sdh_box_scene(true)); }, "scene");
+  test::check_throws_naming([] { MujocoScene j(sdh_box_scene(true), sdh_motors(-1.0)); },
+                            "options.effort[0]");
+}
+
+#endif  // TOPOGRASP_HAVE_MUJOCO
