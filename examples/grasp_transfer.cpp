@@ -19,6 +19,9 @@
 #include <topograsp/io/output_folder.hpp>
 #include <topograsp/io/report.hpp>
 #include <topograsp/io/results.hpp>
+#ifdef TOPOGRASP_HAVE_MUJOCO
+#include <topograsp/io/mujoco_scene.hpp>
+#endif
 
 namespace {
 
@@ -89,11 +92,28 @@ int main(int argc, char** argv) {
 #else
     constexpr bool mujoco_linked = false;
 #endif
-    const CommandLine cli = parse_command_line(args, mujoco_linked);
+    CommandLine cli = parse_command_line(args, mujoco_linked);
     if (cli.help) {
       std::fputs(command_line_usage().c_str(), stdout);
       return 0;
     }
+#ifdef TOPOGRASP_HAVE_MUJOCO
+    if (cli.experiment.judge != Judge::builtin) {
+      // MuJoCo judges each closed grasp with the same suite: the scene exported articulated
+      // (io/mjcf.hpp) and stepped through MujocoScene.
+      GraspSimOptions& sim = cli.experiment.transfer.sim;
+      sim.second_judge_human = [](const HandScene<models::human_hand>& scene,
+                                  const StabilityOptions& o) {
+        return stability_suite(MujocoScene(scene), o);
+      };
+      sim.second_judge_sdh = [](const HandScene<models::schunk_sdh>& scene,
+                                const StabilityOptions& o) {
+        return stability_suite(MujocoScene(scene), o);
+      };
+      sim.second_judge_name = cli.experiment.judge == Judge::mujoco ? "builtin" : "mujoco";
+      sim.second_judge_decides = cli.experiment.judge == Judge::mujoco;
+    }
+#endif
     validate_experiment_options(cli.experiment);
     check_scene_names(cli.experiment);
     OutputFolder folder(cli.out, cli.force, "--out");  // checked before any work

@@ -39,7 +39,7 @@ inline Eigen::Isometry3d sdh_side_pose() {
 }
 
 inline HandScene<models::schunk_sdh> sdh_bottle_scene(double friction = 1.0,
-                                                      double pad_stiffness = 2000.0) {
+                                                      double pad_stiffness = 8000.0) {
   const Eigen::Isometry3d hand = sdh_side_pose();
   HandSceneOptions so;
   so.friction = friction;

@@ -76,6 +76,7 @@ TEST_CASE("a hand scene exports as articulated MJCF: mocap hand, joints, motors,
     CHECK(m.pair_friction[5 * p] == Approx(0.9).epsilon(1e-15));
     CHECK(m.pair_friction[5 * p + 1] == Approx(0.9).epsilon(1e-15));
     CHECK(m.pair_dim[p] == 4);
+    CHECK(m.pair_solref[mjNREF * p] == Approx(0.01));  // near the built-in pads' stiffness
   }
   CHECK(m.ngeom == world.collider_count());
   CHECK(m.opt.timestep == Approx(1.0 / 60.0 / 9.0));
@@ -92,12 +93,13 @@ TEST_CASE("a hand scene exports as articulated MJCF: mocap hand, joints, motors,
   const double r = 0.035, h = 0.1;
   CHECK(I[0] == Approx(0.5 * r * r / 2).epsilon(1e-6));
   CHECK(I[2] == Approx(0.5 * (3 * r * r + 4 * h * h) / 12).epsilon(1e-6));
-  // The motors: force range, kp saturating within hold_angle, control range = joint limits.
+  // The motors: force range, kp the built-in servo's stiffness, control range = joint limits.
   const int a = mj_name2id(&m, mjOBJ_ACTUATOR, "finger_12");
   REQUIRE(a >= 0);
   CHECK(m.actuator_forcelimited[a] == 1);
   CHECK(m.actuator_forcerange[2 * a + 1] == Approx(0.5));
-  CHECK(m.actuator_gainprm[mjNGAIN * a] == Approx(0.5 / options.hold_angle));
+  CHECK(m.actuator_gainprm[mjNGAIN * a] ==
+        Approx(m.actuator_forcerange[2 * a + 1] / scene.effort_fraction() / scene.servo_reach(1)));
   CHECK(m.actuator_ctrlrange[2 * a] == Approx(models::schunk_sdh.joint_spec(1).lower));
   CHECK(m.actuator_ctrlrange[2 * a + 1] == Approx(models::schunk_sdh.joint_spec(1).upper));
   // The keyframe puts every hand shape where the scene has it.
@@ -157,7 +159,7 @@ TEST_CASE("the human hand exports with every link where the built-in scene has i
   CHECK(checked == world.collider_count() - 2);
   for (int i = 0; i < models::human_hand.nq; ++i)
     CHECK(ms.joint_value(models::human_hand.joint_name(i)) ==
-          Approx(scene.joint_targets()[i]).margin(1e-12));
+          Approx(scene.joint_positions()[i]).margin(1e-12));
   CHECK(ms.object_in_hand().isApprox(scene.object_in_hand(), 1e-12));
 #endif
 }
@@ -179,10 +181,8 @@ TEST_CASE("the articulated export writes a model without effort data and refuses
   };
   bad([](MjcfOptions& o) { o.max_time_step = 0.0; }, "options.max_time_step");
   bad([](MjcfOptions& o) { o.impratio = -1.0; }, "options.impratio");
-  bad([](MjcfOptions& o) { o.hold_angle = std::nan(""); }, "options.hold_angle");
-  bad([](MjcfOptions& o) { o.hold_distance = 0.0; }, "options.hold_distance");
-  bad([](MjcfOptions& o) { o.damping_time = -1.0; }, "options.damping_time");
   bad([](MjcfOptions& o) { o.default_armature = -1.0; }, "options.default_armature");
+  bad([](MjcfOptions& o) { o.contact_timeconst = 0.001; }, "options.contact_timeconst");
   bad([](MjcfOptions& o) { o.report_distance = -1.0; }, "options.report_distance");
   bad([](MjcfOptions& o) { o.effort.assign(3, 1.0); }, "options.effort");
   bad([](MjcfOptions& o) { o.effort = {1, 1, 1, 0, 1, 1, 1}; }, "options.effort[3]");

@@ -19,7 +19,9 @@ namespace {
 // 1 cm thick. One spare joint without shapes (a model needs no joint, the scene is fine either
 // way).
 inline constexpr auto cage =
-    make_model("cage", links(root("palm"), revolute("spare", "palm", Pose{}, {0, 0, 1}, -1, 1)),
+    make_model("cage",
+               links(root("palm"),
+                     revolute("spare", "palm", Pose{}, {0, 0, 1}, -1, 1).actuator(1.0, 1.0, 1e-4)),
                shapes(box("palm", at(0, 0, -0.05), {0.04, 0.04, 0.005}),   // floor
                       box("palm", at(0, 0, 0.05), {0.04, 0.04, 0.005}),    // lid
                       box("palm", at(0.035, 0, 0), {0.005, 0.04, 0.055}),  // walls
@@ -31,7 +33,9 @@ inline constexpr auto cage =
 // An open palm (its surface the plane z = 0 of the hand frame, 3 cm thick) with a wall on its +x
 // side and one on its +y side (inner faces at x = 0.03 and y = 0.03).
 inline constexpr auto corner =
-    make_model("corner", links(root("palm"), revolute("spare", "palm", Pose{}, {0, 0, 1}, -1, 1)),
+    make_model("corner",
+               links(root("palm"),
+                     revolute("spare", "palm", Pose{}, {0, 0, 1}, -1, 1).actuator(1.0, 1.0, 1e-4)),
                shapes(box("palm", at(0, 0, -0.03), {0.1, 0.1, 0.03}),
                       box("palm", at(0.035, 0, 0.03), {0.005, 0.1, 0.03}),
                       box("palm", at(0, 0.035, 0.03), {0.1, 0.005, 0.03})),

@@ -85,7 +85,7 @@ TEST_CASE("the command line's defaults and values", "[io][command_line]") {
   CHECK(parse({"--jobs", "2", "-h"}).help);
 }
 
-TEST_CASE("--friction sets one coefficient for every pair; the default is the table",
+TEST_CASE("the option --friction sets one coefficient for every pair; the default is the table",
           "[io][command_line]") {
   CHECK(parse({}).experiment.transfer.sim.friction == 0.0);
   CHECK(parse({"--friction", "0.3"}).experiment.transfer.sim.friction == 0.3);
@@ -203,7 +203,7 @@ TEST_CASE("every --set parameter is checked against its range before any work",
   }
 }
 
-TEST_CASE("--judge picks the simulator; its default follows whether MuJoCo is linked",
+TEST_CASE("the option --judge picks the simulator; its default follows whether MuJoCo is linked",
           "[io][command_line]") {
   const auto parse_with = [](std::initializer_list<std::string_view> args, bool mujoco) {
     const std::vector<std::string_view> v(args);
@@ -218,7 +218,7 @@ TEST_CASE("--judge picks the simulator; its default follows whether MuJoCo is li
   CHECK(to_string(Judge::mujoco) == "mujoco");
 }
 
-TEST_CASE("--judge refuses an unknown engine, and MuJoCo where it is not linked",
+TEST_CASE("the option --judge refuses an unknown engine, and MuJoCo where it is not linked",
           "[io][command_line][bad-input]") {
   CHECK(error_of({"--judge", "physx"}) ==
         "--judge: unknown judge \"physx\" (expected builtin, mujoco or both)");

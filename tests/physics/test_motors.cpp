@@ -83,8 +83,7 @@ TEST_CASE("A finger holds a weight below its torque limit and drops one above it
       REQUIRE(f.step() == Status::success);
       lowest = std::max(lowest, f.q());
     }
-    INFO("effort / load torque " << ratio << ", finger at " << f.q() << " rad, at most "
-                                 << lowest);
+    INFO("effort / load torque " << ratio << ", finger at " << f.q() << " rad, at most " << lowest);
     if (ratio < 1.0) {
       // The finger gives way: it turns down to its limit and the box falls off (then the
       // servo brings the empty finger back).
@@ -125,7 +124,7 @@ TEST_CASE("A motor commanded past an object stalls on it, pressing with its limi
     for (int k = 0; k < m.count; ++k)
       moment += m.points[static_cast<std::size_t>(k)].step_impulse *
                 m.points[static_cast<std::size_t>(k)].point.x();
-  CHECK(moment / o.time_step == Approx(effort).epsilon(0.05));
+  CHECK(moment / o.time_step == Approx(effort).epsilon(0.07));  // points as levers: approximate
   CHECK(h.w.body(b).x.z() > 0.05);
 }
 
@@ -177,8 +176,11 @@ TEST_CASE("Actuators refuse bad input, naming it", "[motors][input]") {
   test::check_throws_naming(
       [&] { w.add_actuator(with([](ActuatorDesc& d) { d.max_velocity = 1e9; })); },
       "desc.max_velocity");
-  test::check_throws_naming([&] { w.add_actuator(with([](ActuatorDesc& d) { d.gain = 0.0; })); },
-                            "desc.gain");
+  test::check_throws_naming(
+      [&] { w.add_actuator(with([](ActuatorDesc& d) { d.stiffness = 0.0; })); }, "desc.stiffness");
+  test::check_throws_naming(
+      [&] { w.add_actuator(with([](ActuatorDesc& d) { d.damping_time = -1.0; })); },
+      "desc.damping_time");
   const int a = w.add_actuator(good);
   test::check_throws_naming([&] { w.set_actuator_target(a + 1, 0.0); }, "a");
   test::check_throws_naming([&] { w.set_actuator_target(a, INFINITY); }, "target");

@@ -53,6 +53,32 @@ struct CloseResult {
   int contacts = 0;  ///< hand-object contact points when closing ends
 };
 
+/// The targets a closed hand holds with: each joint with a closing direction at its closed
+/// limit (the upper for +1, the lower for -1), every other joint at its value in \p q.
+template <const auto& M>
+[[nodiscard]] Vec<M.nq> closed_targets(const Vec<M.nq>& q) noexcept {
+  const Vec<M.nq> lo = lower_limits<M>(), hi = upper_limits<M>(), dir = closing_directions<M>();
+  Vec<M.nq> out = q;
+  for (int i = 0; i < M.nq; ++i) {
+    if (dir[i] > 0.0) out[i] = hi[i];
+    if (dir[i] < 0.0) out[i] = lo[i];
+  }
+  return out;
+}
+
+/// The targets a hand holds with once closed at \p q: each joint with a closing direction
+/// \p hold_fraction of its servo's reach (HandScene::servo_reach()) further closed, so that its
+/// motor presses with hold_fraction of its torque limit where it stands and stiffens against a
+/// load up to the full limit; every other joint where it is.
+template <const auto& M, class S>
+[[nodiscard]] Vec<M.nq> hold_targets(const HandScene<M, S>& scene, const Vec<M.nq>& q,
+                                     double hold_fraction) noexcept {
+  const Vec<M.nq> dir = closing_directions<M>();
+  Vec<M.nq> out = q;
+  for (int i = 0; i < M.nq; ++i) out[i] += dir[i] * hold_fraction * scene.servo_reach(i);
+  return out;
+}
+
 namespace detail {
 
 // Links moved by configuration entry i: those with a joint driven by entry i in their support.
@@ -77,14 +103,16 @@ std::array<bool, std::remove_cvref_t<decltype(M)>::n_links> links_after_joint(in
 /// every closing joint's motor is commanded to its closed limit and every other joint's to stay,
 /// all at options.hold_fraction of their torque limits, and the scene is stepped
 /// options.closing_steps times with gravity off: each finger closes until it stalls on the
-/// object, pressing with what its motor gives, or reaches its limit. The scene is left holding
-/// (motors at hold_fraction, gravity restored): the moment closing ends, the reference of the
-/// stability tests. Works for any model whose joints have motors (HandScene); joints with
-/// closing 0 (abduction, a free base) keep their value. Throws topograsp::invalid_argument
-/// naming the option for a non-positive or non-finite step, a step below the largest joint
-/// range / k_max_close_increments (a finer search would take longer than any use warrants: 1e-8
-/// rad would be 3e8 increments), a negative or non-finite touch_distance, bisections outside
-/// [0, 64], a hold_fraction outside (0, 1] or closing_steps outside [1, 1000000].
+/// object, pressing with what its motor gives, or reaches its limit. The scene is left holding,
+/// gravity restored: each closing joint's servo targets hold_targets() (it presses with
+/// hold_fraction of its limit where it stands, and resists a load stiffly up to its full limit);
+/// the moment closing ends, the reference of the stability tests. Works for any model whose joints
+/// have motors (HandScene); joints with closing 0 (abduction, a free base) keep their value. Throws
+/// topograsp::invalid_argument naming the option for a non-positive or non-finite step, a step
+/// below the largest joint range / k_max_close_increments (a finer search would take longer than
+/// any use warrants: 1e-8 rad would be 3e8 increments), a negative or non-finite touch_distance,
+/// bisections outside [0, 64], a hold_fraction outside (0, 1] or closing_steps outside [1,
+/// 1000000].
 template <const auto& M, class S>
 CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options = {}) {
   constexpr int nq = M.nq;
@@ -183,16 +211,12 @@ CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options
     if (!any) break;
   }
   result.q_contact = q;
-  Vec<nq> closed = q;
-  for (int i = 0; i < nq; ++i) {
+  for (int i = 0; i < nq; ++i)
     if (result.touched[static_cast<std::size_t>(i)]) ++result.touching_joints;
-    if (dir[i] > 0.0) closed[i] = hi[i];
-    if (dir[i] < 0.0) closed[i] = lo[i];
-  }
   // Close with the motors, gravity off.
   scene.place_hand(hand, result.q_contact);
   scene.set_effort_fraction(options.hold_fraction);
-  scene.set_joint_targets(closed);
+  scene.set_joint_targets(closed_targets<M>(q));
   World<S>& w = scene.world();
   const detail::V3<S> gravity = w.gravity();
   w.set_gravity(Eigen::Vector3d::Zero());
@@ -200,6 +224,9 @@ CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options
     result.status = scene.step();
   w.set_gravity(gravity.template cast<double>());
   result.q_closed = scene.joint_positions();
+  // Hold: the same torque where each finger stands, now as a position servo with its full limit.
+  scene.set_joint_targets(hold_targets(scene, result.q_closed, options.hold_fraction));
+  scene.set_effort_fraction(1.0);
   result.contacts = scene.hand_contacts();
   return result;
 }

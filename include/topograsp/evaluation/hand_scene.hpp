@@ -39,19 +39,26 @@ struct ObjectSpec {
 /// The parameters of a HandScene beyond the stepper's.
 struct HandSceneOptions {
   /// Time step, contact stiffness, ...: StepperOptions defaults but 4 solver iterations (light
-  /// finger joints on a heavy object converge poorly in one, StepperOptions::iterations).
+  /// finger joints on a heavy object converge poorly in one, StepperOptions::iterations) and
+  /// finger pads of 8000 N/m (hand_stiffness: firm rubber pads, 8 N per mm, so that a finger
+  /// pressing with 10 to 20 N gives 1 to 3 mm).
   StepperOptions stepper = [] {
     StepperOptions o;
     o.iterations = 4;
+    o.hand_stiffness = 8000.0;
     return o;
   }();
   /// Coulomb friction coefficient between the hand and the object. Default 1 (rubber-covered
   /// fingers on plastic or wood are about 0.8 to 1.2).
   double friction = 1.0;
-  /// The motors' position gain (1/s): each servo commands the velocity gain * (target -
-  /// position), within the joint's speed limit (ActuatorDesc::gain). Default 20/s: a joint 0.05
-  /// rad from its target moves at 1 rad/s.
-  double servo_gain = 20.0;
+  /// How far from its target a motor gives its full torque limit (rad): each servo's stiffness
+  /// is the joint's effort / servo_angle (N m/rad), as MuJoCo's position actuator kp. Default
+  /// 0.05 rad (3 degrees): a stiff position servo.
+  double servo_angle = 0.05;
+  /// The same for prismatic joints (m). Default 0.005 m.
+  double servo_distance = 0.005;
+  /// Each servo's damping is its stiffness times this (s). Default 0.01 s.
+  double servo_damping_time = 0.01;
 };
 
 /// A hand of model \p M (a reference to a constexpr Model) holding an object, over scalar \p S.
@@ -100,7 +107,9 @@ class HandScene {
     require_configuration<M>(q, "q");
     require_hand_pose(hand_pose, "hand_pose");
     require_positive(options.friction, "options.friction");
-    require_positive(options.servo_gain, "options.servo_gain");
+    require_positive(options.servo_angle, "options.servo_angle");
+    require_positive(options.servo_distance, "options.servo_distance");
+    require_non_negative(options.servo_damping_time, "options.servo_damping_time");
     require_motors();
     if (object.shapes.empty())
       detail::throw_invalid_argument("object.shapes", "expected at least one shape");
@@ -150,7 +159,8 @@ class HandScene {
       a.inertia = inertia_[i];
       a.max_effort = M.joint_spec(i).effort;
       a.max_velocity = M.joint_spec(i).velocity;
-      a.gain = options.servo_gain;
+      a.stiffness = spec.effort / servo_reach(i);
+      a.damping_time = options.servo_damping_time;
       actuator_[static_cast<std::size_t>(i)] = world_.add_actuator(a);
     }
     link_body_.fill(-1);
@@ -227,6 +237,12 @@ class HandScene {
   /// The torque (N m, or N) configuration entry \p i's motor gave over the last step.
   [[nodiscard]] double motor_torque(int i) const noexcept {
     return world_.actuator_torque(actuator_[static_cast<std::size_t>(i)]);
+  }
+  /// How far from its target configuration entry \p i's motor gives its full torque limit
+  /// (options().servo_angle, or servo_distance for a prismatic joint).
+  [[nodiscard]] double servo_reach(int i) const noexcept {
+    return M.joint_spec(i).type == JointType::prismatic ? options_.servo_distance
+                                                        : options_.servo_angle;
   }
   /// The joints' positions (dim nq, rad or m): where the motors have taken them.
   [[nodiscard]] const Config& joint_positions() const noexcept { return q_; }

@@ -49,8 +49,10 @@ struct ExperimentOptions {
   int shard_count = 1;
   int max_hypotheses = 0;  ///< if > 0, only the first this many hypotheses of each object
   TransferOptions transfer{};
-  /// Which engine judges each grasp (grasp_transfer --judge). Not read by run_experiment yet:
-  /// every grasp is judged by the built-in stepper until the MuJoCo judge is wired in (issue 13).
+  /// Which engine judges each grasp (grasp_transfer --judge). builtin: the built-in stepper;
+  /// mujoco or both need transfer.sim's second judges set (grasp_transfer sets MuJoCo's): with
+  /// both, the built-in decides and MuJoCo's verdict is recorded beside it; with mujoco, MuJoCo's
+  /// decides (transfer.sim.second_judge_decides) and the built-in's is recorded.
   Judge judge = Judge::builtin;
 };
 
@@ -191,6 +193,18 @@ inline void validate_experiment_options(const ExperimentOptions& options) {
   for (const GraspObject& o : options.objects) o.validate();
   validate_transfer_parameters(options.transfer);
   require_non_negative(options.transfer.sim.friction, "transfer.sim.friction");
+  const GraspSimOptions& sim = options.transfer.sim;
+  const bool second = sim.second_judge_human && sim.second_judge_sdh;
+  if (options.judge != Judge::builtin && !second)
+    detail::throw_invalid_argument(
+        "judge", "--judge " + std::string(to_string(options.judge)) +
+                     " needs a second judge (transfer.sim.second_judge_human and _sdh)");
+  if (options.judge == Judge::builtin && (sim.second_judge_human || sim.second_judge_sdh))
+    detail::throw_invalid_argument(
+        "judge", "builtin, but a second judge is set (transfer.sim.second_judge_*)");
+  if (sim.second_judge_decides != (options.judge == Judge::mujoco))
+    detail::throw_invalid_argument("transfer.sim.second_judge_decides",
+                                   "expected true exactly when judge is mujoco");
   for (const auto& [f, name] :
        {std::pair{options.transfer.sim.close.hold_fraction, "transfer.sim.close.hold_fraction"},
         std::pair{options.transfer.sim.human_hold_fraction, "transfer.sim.human_hold_fraction"}})

@@ -6,9 +6,12 @@
 /// decides whether the grasp is stable and so kept as a demonstration.
 #pragma once
 
+#include <functional>
 #include <optional>
+#include <string>
 
 #include <topograsp/evaluation/close_hand.hpp>
+#include <topograsp/evaluation/grasp_wrench.hpp>
 #include <topograsp/evaluation/stability_suite.hpp>
 #include <topograsp/grasp/hand_axes.hpp>
 #include <topograsp/grasp/hypothesis.hpp>
@@ -16,17 +19,33 @@
 #include <topograsp/model/models.hpp>
 #include <topograsp/task/winding_descriptor.hpp>
 #include <topograsp/task/winding_task.hpp>
+#ifdef TOPOGRASP_HAVE_QHULL
+#include <topograsp/evaluation/grasp_quality.hpp>
+#endif
 
 namespace topograsp {
 
+/// A judge of a closed grasp other than the built-in stepper: given the scene as closing left it
+/// and the stability options, the suite's verdict in that engine (grasp_transfer --judge sets
+/// MuJoCo's, MujocoScene in io/mujoco_scene.hpp).
+template <const auto& M>
+using SecondJudge = std::function<StabilityResult(const HandScene<M>&, const StabilityOptions&)>;
+
+/// The Ferrari-Canny epsilon of a grasp when closing ended (computed where qhull is linked,
+/// TOPOGRASP_HAVE_QHULL; evaluation/grasp_quality.hpp).
+struct QualityRecord {
+  bool computed = false;      ///< false in a build without qhull
+  double epsilon = 0.0;       ///< > 0: force closure
+  std::string status;         ///< force_closure, not_force_closure or degenerate
+  std::string reason;         ///< why degenerate ("" otherwise)
+  double torque_scale = 0.0;  ///< the object's max radius from its centre of mass (m)
+};
+
 /// The parameters of the grasp simulations shared by the demonstrations and the transfers.
 struct GraspSimOptions {
-  /// The stepper (the friction is the object's own). Hand contacts of 8000 N/m: firm finger pads.
-  HandSceneOptions scene = [] {
-    HandSceneOptions o;
-    o.stepper.hand_stiffness = 8000.0;
-    return o;
-  }();
+  /// The hand scene (HandSceneOptions defaults: 8000 N/m pads, 4 solver iterations; the friction
+  /// is the object's own).
+  HandSceneOptions scene{};
   /// The robot hands' closing: by the motors, holding at half their torque limits (the SDH's and
   /// the Barrett's efforts are their motors' limits; CloseOptions defaults).
   CloseOptions close{};
@@ -39,6 +58,15 @@ struct GraspSimOptions {
   /// of materials (friction_coefficient(), docs/objects.md); a positive value is the Coulomb
   /// coefficient of every pair, for a friction sensitivity run (grasp_transfer --friction MU).
   double friction = 0.0;
+  /// A second judge of every human grasp and of every SDH transfer (empty: none), run with the
+  /// same stability options on the scene as closing left it.
+  SecondJudge<models::human_hand> second_judge_human;
+  SecondJudge<models::schunk_sdh> second_judge_sdh;
+  /// The second judge's name in results.json. Default "mujoco".
+  std::string second_judge_name = "mujoco";
+  /// If true, the second judge's verdict decides which grasps are stable (--judge mujoco) and
+  /// the built-in's is recorded as the second. Default false.
+  bool second_judge_decides = false;
   double contact_gap = 0.002;  ///< how close the approach brings the hand to the object (m)
   double standoff = 0.12;      ///< where the approach starts, back from the face (m)
 };
@@ -69,14 +97,53 @@ struct HumanGrasp {
   bool reached = false;  ///< the approach touched the object (else nothing was simulated)
   Eigen::Isometry3d hand_pose = Eigen::Isometry3d::Identity();  ///< the palm (root link) pose
   Vec<20> q = Vec<20>::Zero();                                  ///< joints when closing ended
-  int touching_joints = 0;           ///< joints stopped by the object while closing
-  StabilityResult stability;         ///< the stability suite's verdict and records
-  Vec<4> windings = Vec<4>::Zero();  ///< w of gamma_1 (index) .. gamma_4 (pinky)
-  WindingDescriptor descriptor;      ///< the two largest, which curves
+  int touching_joints = 0;                ///< joints stopped by the object while closing
+  StabilityResult stability;              ///< the deciding judge's verdict and records
+  std::optional<StabilityResult> second;  ///< the other judge's, if there is one
+  QualityRecord quality;                  ///< Ferrari-Canny epsilon when closing ended
+  Vec<4> windings = Vec<4>::Zero();       ///< w of gamma_1 (index) .. gamma_4 (pinky)
+  WindingDescriptor descriptor;           ///< the two largest, which curves
   /// Where the object was when closing ended (it starts at the identity).
   Eigen::Isometry3d object_pose = Eigen::Isometry3d::Identity();
   [[nodiscard]] bool stable() const noexcept { return reached && stability.stable; }
 };
+
+/// What the judges say of a closed grasp: the deciding verdict, the other one, its quality.
+struct GraspJudgement {
+  StabilityResult stability;
+  std::optional<StabilityResult> second;
+  QualityRecord quality;
+};
+
+/// Judges the grasp that \p scene holds as closing left it: the stability suite in the built-in
+/// stepper, the second judge \p second (if any) with the same options, whichever
+/// options.second_judge_decides names decides; and the Ferrari-Canny epsilon of its contacts
+/// (where qhull is linked), torques scaled by the object's max radius from its centre of mass.
+/// Throws as stability_suite() for bad options.stability.
+template <const auto& M>
+[[nodiscard]] GraspJudgement judge_grasp(const HandScene<M>& scene, const GraspObject& object,
+                                         const GraspSimOptions& options,
+                                         const SecondJudge<M>& second) {
+  GraspJudgement j;
+  j.stability = stability_suite(scene, options.stability);
+  if (second) {
+    j.second = second(scene, options.stability);
+    if (options.second_judge_decides) std::swap(j.stability, *j.second);
+  }
+#ifdef TOPOGRASP_HAVE_QHULL
+  const std::vector<ContactForQuality> contacts = scene.hand_contact_points();
+  j.quality.torque_scale = max_radius(object.parts, object.centre_of_mass());
+  const GraspQuality q =
+      ferrari_canny_epsilon(contacts, scene.object_com(), j.quality.torque_scale);
+  j.quality.computed = true;
+  j.quality.epsilon = q.epsilon;
+  j.quality.status = std::string(to_string(q.status));
+  j.quality.reason = q.reason;
+#else
+  (void)object;
+#endif
+  return j;
+}
 
 /// The contact surface of hand model \p M, by its name: the human hand's skin, the Barrett's
 /// links, and the SDH's pads (also for any other model: its pads are the only robot surface with
@@ -140,7 +207,10 @@ template <const auto& M>
   g.q = closed.q_closed;
   g.touching_joints = closed.touching_joints;
   g.object_pose = scene.object_pose();
-  g.stability = stability_suite(scene, options.stability);
+  GraspJudgement judged = judge_grasp(scene, object, options, options.second_judge_human);
+  g.stability = std::move(judged.stability);
+  g.second = std::move(judged.second);
+  g.quality = std::move(judged.quality);
   // The windings of the closed hand around the centre of mass.
   Vec<26> qc = *touched;
   qc.tail<20>() = g.q;

@@ -236,7 +236,9 @@ struct RobotGrasp {
   /// targets (the paper's Fig. 7), and AICO's sweeps.
   std::vector<Vec2> winding_plan, winding_targets;
   std::vector<AicoSweepRecord> sweep_log;
-  StabilityResult stability;  ///< the stability suite's verdict and records
+  StabilityResult stability;              ///< the deciding judge's verdict and records
+  std::optional<StabilityResult> second;  ///< the other judge's, if there is one
+  QualityRecord quality;                  ///< Ferrari-Canny epsilon when closing ended
   /// Where the object was when closing ended (it starts at the identity): with hand_pose and
   /// q_closed, the grasp that the stability suite started from.
   Eigen::Isometry3d object_pose = Eigen::Isometry3d::Identity();
@@ -351,7 +353,10 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
   r.q_closed = closed.q_closed;
   r.winding = detail::sdh_windings(object.centre_of_mass(), root, closed.q_closed);
   r.object_pose = scene.object_pose();
-  r.stability = stability_suite(scene, options.sim.stability);
+  GraspJudgement judged = judge_grasp(scene, object, options.sim, options.sim.second_judge_sdh);
+  r.stability = std::move(judged.stability);
+  r.second = std::move(judged.second);
+  r.quality = std::move(judged.quality);
 }
 
 /// The SDH palm pose \p root (object frame, hand joints \p q_hand) moved along \p approach so

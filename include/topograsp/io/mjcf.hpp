@@ -32,17 +32,6 @@ struct MjcfOptions {
   /// MuJoCo's impratio: the ratio of frictional to normal constraint impedance. 10 or more with
   /// elliptic cones keeps a held object from creeping out of the grip. Default 10.
   double impratio = 10.0;
-  /// The joint error (rad) at which a revolute position actuator reaches its force limit:
-  /// kp = force limit / hold_angle. Small, so that a finger pressed against the object by a
-  /// target past it pushes with its full allowed torque, as the built-in motors do. Default 0.02
-  /// (1.1 degrees).
-  double hold_angle = 0.02;
-  /// The same for a prismatic joint (m). Default 0.002.
-  double hold_distance = 0.002;
-  /// The actuator's damping time (s): each actuated joint gets damping kv = kp * damping_time
-  /// (MuJoCo 2.2's position actuator has no kv of its own; the joint's damping is integrated
-  /// implicitly). Default 0.01.
-  double damping_time = 0.01;
   /// The rotor inertia (kg m^2 or kg) written for a joint whose model gives none
   /// (LinkSpec::armature 0): without it a light finger link on a stiff position servo is beyond
   /// what a 2 ms explicit spring step resolves. Default 0.001.
@@ -51,6 +40,13 @@ struct MjcfOptions {
   /// and act only on overlap: each pair gets margin = gap = this value, so MuJoCo's constraint
   /// starts at distance 0 exactly as without it. Default 0.005.
   double report_distance = 0.005;
+  /// The time constant (s) of every hand-object contact (the pair's solref, damping ratio 1).
+  /// MuJoCo's contact is a spring whose stiffness scales with the effective mass m as about
+  /// m / timeconst^2: 0.01 s gives a 0.6 kg object about 6000 N/m, near the built-in finger pads'
+  /// 8000 N/m (StepperOptions::hand_stiffness), where MuJoCo's default 0.02 s gives 1500 N/m and
+  /// lets a held object turn in the grip several times as far. At least 2 time steps, as MuJoCo
+  /// asks (0.01 s is 5 of the 1.85 ms steps). Default 0.01.
+  double contact_timeconst = 0.01;
   /// Overrides the effort limit of each configuration entry (N m or N, dim nq, each > 0); empty:
   /// the model's LinkSpec::effort.
   std::vector<double> effort;
@@ -123,11 +119,13 @@ MjcfMotorState<M.nq> mjcf_motor_state(const HandScene<M, S>& scene, const MjcfOp
 inline void require_mjcf_options(const MjcfOptions& o, int nq) {
   require_positive(o.max_time_step, "options.max_time_step");
   require_positive(o.impratio, "options.impratio");
-  require_positive(o.hold_angle, "options.hold_angle");
-  require_positive(o.hold_distance, "options.hold_distance");
-  require_non_negative(o.damping_time, "options.damping_time");
   require_non_negative(o.default_armature, "options.default_armature");
   require_non_negative(o.report_distance, "options.report_distance");
+  if (!(o.contact_timeconst >= 2.0 * o.max_time_step && o.contact_timeconst < 1e3))
+    throw_invalid_argument("options.contact_timeconst",
+                           "expected at least 2 time steps (2 * options.max_time_step) and under "
+                           "1000 s, got " +
+                               std::to_string(o.contact_timeconst));
   if (!o.effort.empty() && static_cast<int>(o.effort.size()) != nq)
     throw_invalid_argument("options.effort", "expected " + std::to_string(nq) +
                                                  " entries (one per configuration entry) or none, "
@@ -269,10 +267,12 @@ void write_mjcf(std::ostream& os, const World<S>& world, const Eigen::Isometry3d
 ///   from its shapes at MuJoCo's default density (1000 kg/m^3), a link with neither is bounded by
 ///   `boundmass` 1e-4 kg and `boundinertia` 1e-9 kg m^2;
 /// - one `<position>` actuator per configuration entry on its joint, `ctrlrange` = the joint
-///   limits, `forcerange` = +-(effort x fraction) with `kp` = effort x fraction / options.
-///   hold_angle (hold_distance for prismatic joints); with effort 0 (the model gives none and
-///   options.effort is empty) the actuator is written without a force range and with kp = 1 / hold
-///   angle (1 N m at hold_angle), and an XML comment says so;
+///   limits, `forcerange` = +-(effort x fraction), and the built-in servo's spring: `kp` =
+///   effort / HandScene::servo_reach() and the joint's damping kp x
+///   HandSceneOptions::servo_damping_time (MuJoCo 2.2's position actuator has no kv; the joint
+///   damping is integrated implicitly); with effort 0 (the model gives none and options.effort is
+///   empty) the actuator is written without a force range and with kp = 1 / reach, and an XML
+///   comment says so;
 /// - mimic joints as `<equality><joint joint1="mimic" joint2="source" polycoef="offset
 ///   multiplier 0 0 0"/>`;
 /// - the object as a body named `object` with a free joint, its World mass, centre of mass and
@@ -280,14 +280,16 @@ void write_mjcf(std::ostream& os, const World<S>& world, const Eigen::Isometry3d
 /// - no contact by geom type (contype = conaffinity = 0): one `<contact><pair>` per (hand shape,
 ///   object shape) with the World's pair friction (World::manifolds()[k].friction, so the
 ///   coefficient is exact whatever MuJoCo's combination rule), condim 4 with torsional friction
-///   mu x torsional_friction_radius (3 without), margin = gap = options.report_distance;
+///   mu x torsional_friction_radius (3 without), margin = gap = options.report_distance, solref
+///   = options.contact_timeconst with damping ratio 1;
 /// - a site named `palm` at the model's palm centre (a hand model only);
 /// - `<keyframe><key name="grasp">` with qpos (the joints' values and the object's pose), ctrl
 ///   (the targets, clamped to the limits), mpos and mquat (the hand pose).
 /// Geoms are named `hand_<collider>` (the World's collider index) and `object_<k>`. Throws
 /// topograsp::invalid_argument naming the option for a bad option (non-positive max_time_step,
-/// impratio, hold_angle or hold_distance; negative damping_time, default_armature or
-/// report_distance; options.effort of the wrong size or with an entry that is not positive).
+/// or impratio; negative default_armature or
+/// report_distance; a contact_timeconst under 2 * max_time_step; options.effort of the wrong size
+/// or with an entry that is not positive).
 template <const auto& M, class S>
 void write_mjcf(std::ostream& os, const HandScene<M, S>& scene, const MjcfOptions& options) {
   using ModelType = std::remove_cvref_t<decltype(M)>;
@@ -315,10 +317,10 @@ void write_mjcf(std::ostream& os, const HandScene<M, S>& scene, const MjcfOption
   std::array<double, static_cast<std::size_t>(M.nq)> kp{}, limit{};
   for (int i = 0; i < M.nq; ++i) {
     const auto u = static_cast<std::size_t>(i);
-    const double hold =
-        M.joint_spec(i).type == JointType::prismatic ? options.hold_distance : options.hold_angle;
+    // The built-in servo's stiffness: the full effort at the scene's servo reach.
+    const double hold = scene.servo_reach(i);
     limit[u] = motors.effort[u] * motors.fraction;
-    kp[u] = (limit[u] > 0.0 ? limit[u] : 1.0) / hold;
+    kp[u] = (motors.effort[u] > 0.0 ? motors.effort[u] : 1.0) / hold;
   }
   const auto joint_value = [&](int l) {
     const Link& link = M.links[static_cast<std::size_t>(l)];
@@ -366,7 +368,7 @@ void write_mjcf(std::ostream& os, const HandScene<M, S>& scene, const MjcfOption
       detail::write_mjcf_vec3(os, "axis", Vec3(link.axis[0], link.axis[1], link.axis[2]));
       os << " limited=\"true\" range=\"" << link.spec.lower << ' ' << link.spec.upper
          << "\" armature=\"" << armature << "\" damping=\""
-         << kp[src] * options.damping_time * scale << "\"/>\n";
+         << kp[src] * scene.options().servo_damping_time * scale << "\"/>\n";
     }
     const int body = scene.link_body(l);
     if (body >= 0) {
@@ -424,7 +426,7 @@ void write_mjcf(std::ostream& os, const HandScene<M, S>& scene, const MjcfOption
     os << "    <pair geom1=\"hand_" << hand_collider << "\" geom2=\"object_" << object_collider
        << "\" condim=\"" << (torsion > 0.0 ? 4 : 3) << "\" friction=\"" << mu << ' ' << mu << ' '
        << mu * torsion << " 0.0001 0.0001\" margin=\"" << options.report_distance << "\" gap=\""
-       << options.report_distance << "\"/>\n";
+       << options.report_distance << "\" solref=\"" << options.contact_timeconst << " 1\"/>\n";
   }
   os << "  </contact>\n";
 

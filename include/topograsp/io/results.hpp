@@ -29,14 +29,19 @@ namespace topograsp {
 }
 
 /// The MJCF text of a closed grasp: hand model \p M at \p hand_pose with joints \p q, the object
-/// where it was after closing.
+/// where it was after closing, the motors holding as closing left them (hold_targets() with
+/// options.sim.human_hold_fraction for the human hand, close.hold_fraction for a robot hand).
 template <const auto& M>
 [[nodiscard]] std::string grasp_mjcf(const GraspObject& object, const Eigen::Isometry3d& hand_pose,
                                      const Vec<M.nq>& q, const Eigen::Isometry3d& object_pose,
                                      const TransferOptions& options) {
   ObjectSpec spec = object_spec(object, hand_surface<M>(), options.sim.friction);
   spec.pose = to_pose(object_pose);
-  const HandScene<M> scene(hand_pose, q, spec, options.sim.scene);
+  HandScene<M> scene(hand_pose, q, spec, options.sim.scene);
+  scene.set_joint_targets(hold_targets(scene, q,
+                                       hand_surface<M>() == HandSurface::human_skin
+                                           ? options.sim.human_hold_fraction
+                                           : options.sim.close.hold_fraction));
   return to_mjcf(scene);
 }
 
@@ -77,6 +82,53 @@ inline void set_stability(Json& rec, const StabilityResult* s) {
   rec.set("weight", s != nullptr ? Json(s->weight) : Json());
   rec.set("closing_penetration", s != nullptr ? Json(s->closing_penetration) : Json());
   rec.set("tests", tests);
+}
+
+// The second judge's verdict and records, and the grasp's Ferrari-Canny epsilon, of a grasp
+// record (null when there is none).
+inline void set_second_and_quality(Json& rec, const std::optional<StabilityResult>& second,
+                                   const QualityRecord* quality, std::string_view name) {
+  if (second) {
+    Json j = Json::object();
+    j.set("engine", std::string(name));
+    j.set("stable", second->stable);
+    j.set("reason", second->reason);
+    set_stability(j, &*second);
+    rec.set("second_judge", j);
+  } else {
+    rec.set("second_judge", Json());
+  }
+  if (quality != nullptr && quality->computed) {
+    Json q = Json::object();
+    q.set("epsilon", quality->epsilon);
+    q.set("status", quality->status);
+    q.set("reason", quality->reason);
+    q.set("torque_scale", quality->torque_scale);
+    rec.set("q1", q);
+  } else {
+    rec.set("q1", Json());
+  }
+}
+
+// Each engine's stable count over the grasps with both verdicts, and how often they agree.
+inline Json agreement_summary(const std::vector<std::pair<bool, bool>>& verdicts,
+                              std::string_view second_name) {
+  if (verdicts.empty()) return Json();
+  int first = 0, second = 0, agree = 0;
+  for (const auto& [a, b] : verdicts) {
+    first += a ? 1 : 0;
+    second += b ? 1 : 0;
+    agree += a == b ? 1 : 0;
+  }
+  const double n = static_cast<double>(verdicts.size());
+  Json s = Json::object();
+  s.set("engine", std::string(second_name));
+  s.set("judged", static_cast<int>(verdicts.size()));
+  s.set("stable_first", first);
+  s.set("stable_second", second);
+  s.set("rate_second", second / n);
+  s.set("agreement", agree / n);
+  return s;
 }
 
 // The median of v (0 values: null).
@@ -172,6 +224,7 @@ inline void check_scene_names(const ExperimentOptions& options) {
   cfg.set("hand_stiffness", options.transfer.sim.scene.stepper.hand_stiffness);
   cfg.set("hold_fraction", options.transfer.sim.close.hold_fraction);
   cfg.set("human_hold_fraction", options.transfer.sim.human_hold_fraction);
+  cfg.set("judge", std::string(to_string(options.judge)));
   cfg.set("closing_steps", options.transfer.sim.close.closing_steps);
   cfg.set("stability",
           detail::json_stability_options(options.transfer.sim.stability,
@@ -189,18 +242,30 @@ inline void check_scene_names(const ExperimentOptions& options) {
     o.set("name", r.object.name);
     o.set("hypotheses", r.hypotheses);
     o.set("stable_human", r.stable_human());
+    const std::string& second_name = options.transfer.sim.second_judge_name;
     std::vector<const StabilityResult*> set;
+    std::vector<std::pair<bool, bool>> verdicts;
     for (const HumanGrasp& g : r.human)
-      if (g.reached) set.push_back(&g.stability);
-    o.set("human", detail::stability_summary(set));
+      if (g.reached) {
+        set.push_back(&g.stability);
+        if (g.second) verdicts.emplace_back(g.stability.stable, g.second->stable);
+      }
+    Json human = detail::stability_summary(set);
+    human.set("second_judge", detail::agreement_summary(verdicts, second_name));
+    o.set("human", human);
     Json ms = Json::object();
     for (std::size_t m = 0; m < r.methods.size(); ++m) {
       set.clear();
-      for (const RobotGrasp& t : r.transfers[m]) set.push_back(t.planned ? &t.stability : nullptr);
+      verdicts.clear();
+      for (const RobotGrasp& t : r.transfers[m]) {
+        set.push_back(t.planned ? &t.stability : nullptr);
+        if (t.planned && t.second) verdicts.emplace_back(t.stability.stable, t.second->stable);
+      }
       Json s = detail::stability_summary(set);
       s.set("tested", r.methods[m].tested);
       s.set("stable", r.methods[m].stable);
       s.set("rate", r.methods[m].rate());
+      s.set("second_judge", detail::agreement_summary(verdicts, second_name));
       ms.set(to_string(r.methods[m].method), s);
     }
     o.set("methods", ms);
@@ -219,6 +284,7 @@ inline void check_scene_names(const ExperimentOptions& options) {
       rec.set("sweeps", 0);
       rec.set("reason", g.stability.reason);
       detail::set_stability(rec, &g.stability);
+      detail::set_second_and_quality(rec, g.second, &g.quality, second_name);
       grasps.push_back(rec);
     }
     for (std::size_t m = 0; m < r.methods.size(); ++m) {
@@ -243,6 +309,8 @@ inline void check_scene_names(const ExperimentOptions& options) {
         rec.set("sweeps", t.sweeps);
         rec.set("reason", t.planned ? t.stability.reason : t.reason);
         detail::set_stability(rec, t.planned ? &t.stability : nullptr);
+        detail::set_second_and_quality(rec, t.planned ? t.second : std::nullopt,
+                                       t.planned ? &t.quality : nullptr, second_name);
         grasps.push_back(rec);
       }
     }

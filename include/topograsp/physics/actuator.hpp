@@ -17,20 +17,22 @@ namespace topograsp {
 
 /// What World::add_actuator() builds an actuator from: one degree of freedom in joint space (a
 /// revolute joint's angle, rad, or a prismatic joint's offset, m) with its own inertia, limits and
-/// a servo. The servo is a velocity motor with a position loop and a torque limit, as Box2D v3's
-/// revolute motor (maxMotorTorque) and MuJoCo's actuator forcerange: it drives the velocity
-/// towards clamp(gain (target - position), -max_velocity, max_velocity) with an impulse of at
-/// most max_effort times the sub-step. A finger commanded past an object therefore closes at
-/// max_velocity until it touches, then presses with max_effort (it stalls); one commanded to a
-/// reachable target settles there.
+/// a servo. The servo is a position controller with a torque limit, as MuJoCo's position
+/// actuator with forcerange and Box2D v3's motor with maxMotorTorque: a spring of \c stiffness
+/// and a damper of stiffness * damping_time towards the target, solved implicitly (a soft
+/// constraint), its approach speed limited to max_velocity and its impulse to max_effort times
+/// the sub-step. At rest a joint pressed by a load L stands stiffness / L off its target, up to
+/// max_effort; a finger commanded past an object closes at most at max_velocity, touches, and
+/// presses with stiffness times its remaining distance to the target, at most max_effort.
 struct ActuatorDesc {
-  double position = 0.0;      ///< initial value (rad or m), within [lower, upper]
-  double lower = 0.0;         ///< joint limits (rad or m), enforced as unilateral constraints
-  double upper = 0.0;         ///< (lower <= upper)
-  double inertia = 1e-4;      ///< kg m^2 (or kg): the joint's inertia including the rotor's
-  double max_effort = 1.0;    ///< N m (or N): the largest torque the servo gives, > 0
-  double max_velocity = 1.0;  ///< rad/s (or m/s): the servo's speed limit, > 0
-  double gain = 20.0;         ///< 1/s: commanded velocity per unit of position error, > 0
+  double position = 0.0;       ///< initial value (rad or m), within [lower, upper]
+  double lower = 0.0;          ///< joint limits (rad or m), enforced as unilateral constraints
+  double upper = 0.0;          ///< (lower <= upper)
+  double inertia = 1e-4;       ///< kg m^2 (or kg): the joint's inertia including the rotor's
+  double max_effort = 1.0;     ///< N m (or N): the largest torque the servo gives, > 0
+  double max_velocity = 1.0;   ///< rad/s (or m/s): the servo's speed limit, > 0
+  double stiffness = 20.0;     ///< N m/rad (or N/m): the servo's position gain, > 0
+  double damping_time = 0.01;  ///< s: the servo's damping is stiffness * damping_time, >= 0
 };
 
 /// A joint carrying a kinematic body, as World::set_body_joints() takes it: moving actuator
@@ -59,9 +61,10 @@ struct Actuator {
   S lower = S(0), upper = S(0);
   S inertia = S(1), inv_inertia = S(1);
   S max_effort = S(1);  ///< the current torque limit of the servo
-  S max_velocity = S(1), gain = S(20);
-  S force = S(0);          ///< external generalised force (N m), e.g. link weights
-  S motor_impulse = S(0);  ///< of the current sub-step, warm-started (N m s)
+  S max_velocity = S(1);
+  S stiffness = S(20), damping = S(0.2);  ///< servo spring (N m/rad) and damper (N m s/rad)
+  S force = S(0);                         ///< external generalised force (N m), e.g. link weights
+  S motor_impulse = S(0);                 ///< of the current sub-step, warm-started (N m s)
   S lower_impulse = S(0), upper_impulse = S(0);  ///< limit impulses, warm-started
   S step_impulse = S(0);                         ///< the motor's impulse summed over the last step
 };
@@ -180,10 +183,20 @@ void solve_actuators(std::span<Actuator<S>> act, S h, bool use_bias, S max_push)
   constexpr S k_limit_baumgarte = S(0.2);
   const S inv_h = S(1) / h;
   for (Actuator<S>& a : act) {
-    // Servo.
-    const S command = detail::clamp<S>(a.gain * (a.target - a.q), -a.max_velocity, a.max_velocity);
+    // Servo: a soft constraint C = q - target with a physical spring and damper (Catto, "Soft
+    // constraints", GDC 2011: gamma = 1 / (h (c + h k)), bias rate k / (c + h k)), the bias
+    // limited to the speed limit, the accumulated impulse to the torque limit. The spring is
+    // the servo's own, so it acts in the relax pass too.
+    const S k = a.stiffness, c = a.damping;
+    const S gamma = S(1) / (h * (c + h * k));
+    const S mass_scale = S(1) / (S(1) + a.inertia * gamma);
+    const S impulse_scale = a.inertia * gamma * mass_scale;
+    const S pull =
+        detail::clamp<S>(k / (c + h * k) * (a.q - a.target), -a.max_velocity, a.max_velocity);
     const S limit = a.max_effort * h;
-    const S next = detail::clamp<S>(a.motor_impulse - a.inertia * (a.qd - command), -limit, limit);
+    const S next = detail::clamp<S>(
+        a.motor_impulse - a.inertia * mass_scale * (a.qd + pull) - impulse_scale * a.motor_impulse,
+        -limit, limit);
     a.qd += a.inv_inertia * (next - a.motor_impulse);
     a.motor_impulse = next;
     // Limits: C = q - lower >= 0 and C = upper - q >= 0.

@@ -339,7 +339,8 @@ class World {
   /// Adds a joint-space actuator (see ActuatorDesc) and returns its index. Allocates. Throws
   /// topograsp::invalid_argument naming the field ("desc.inertia", ...) for a non-finite value,
   /// lower above upper, a position outside [lower, upper], or an inertia, max_effort,
-  /// max_velocity or gain that is not positive; and for values S cannot hold (limits and
+  /// max_velocity or stiffness that is not positive, a negative damping_time; and for values S
+  /// cannot hold (limits and
   /// position beyond max_length(), an inertia outside [min_length(), max_length()], a
   /// max_velocity above StepperOptions::max_speed).
   int add_actuator(const ActuatorDesc& desc) {
@@ -365,7 +366,8 @@ class World {
       detail::throw_invalid_argument("desc.max_velocity", "expected at most options.max_speed = " +
                                                               number(options_.max_speed) +
                                                               ", got " + number(desc.max_velocity));
-    require_positive(desc.gain, "desc.gain");
+    require_positive(desc.stiffness, "desc.stiffness");
+    require_non_negative(desc.damping_time, "desc.damping_time");
     detail::Actuator<S> a;
     a.q = a.q0 = a.target = static_cast<S>(desc.position);
     a.lower = static_cast<S>(desc.lower);
@@ -374,7 +376,8 @@ class World {
     a.inv_inertia = S(1) / a.inertia;
     a.max_effort = static_cast<S>(desc.max_effort);
     a.max_velocity = static_cast<S>(desc.max_velocity);
-    a.gain = static_cast<S>(desc.gain);
+    a.stiffness = static_cast<S>(desc.stiffness);
+    a.damping = static_cast<S>(desc.stiffness * desc.damping_time);
     actuators_.push_back(a);
     saved_actuators_.push_back({});
     return static_cast<int>(actuators_.size()) - 1;
