@@ -90,7 +90,7 @@ TEST_CASE("close_hand refuses a step that would take too many increments", "[eva
   o.closing_steps = 0;
   test::check_throws_naming([&] { (void)close_hand(scene, o); }, "options.closing_steps");
   o = {};
-  for (const double f : {0.0, -0.5, 1.5, static_cast<double>(NAN)}) {
+  for (const double f : {0.0, -0.5, 1.5, std::nan("")}) {
     o.hold_fraction = f;
     test::check_throws_naming([&] { (void)close_hand(scene, o); }, "options.hold_fraction");
   }

@@ -5,6 +5,7 @@
 #include "physics_test_support.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include <catch2/catch.hpp>
 
@@ -171,7 +172,7 @@ TEST_CASE("Actuators refuse bad input, naming it", "[motors][input]") {
       [&] { w.add_actuator(with([](ActuatorDesc& d) { d.max_effort = -1.0; })); },
       "desc.max_effort");
   test::check_throws_naming(
-      [&] { w.add_actuator(with([](ActuatorDesc& d) { d.max_velocity = NAN; })); },
+      [&] { w.add_actuator(with([](ActuatorDesc& d) { d.max_velocity = std::nan(""); })); },
       "desc.max_velocity");
   test::check_throws_naming(
       [&] { w.add_actuator(with([](ActuatorDesc& d) { d.max_velocity = 1e9; })); },
@@ -183,10 +184,11 @@ TEST_CASE("Actuators refuse bad input, naming it", "[motors][input]") {
       "desc.damping_time");
   const int a = w.add_actuator(good);
   test::check_throws_naming([&] { w.set_actuator_target(a + 1, 0.0); }, "a");
-  test::check_throws_naming([&] { w.set_actuator_target(a, INFINITY); }, "target");
+  test::check_throws_naming(
+      [&] { w.set_actuator_target(a, std::numeric_limits<double>::infinity()); }, "target");
   test::check_throws_naming([&] { w.set_actuator_max_effort(a, 0.0); }, "max_effort");
   test::check_throws_naming([&] { w.set_actuator_inertia(a, -1.0); }, "inertia");
-  test::check_throws_naming([&] { w.set_actuator_force(a, NAN); }, "force");
+  test::check_throws_naming([&] { w.set_actuator_force(a, std::nan("")); }, "force");
   test::check_throws_naming([&] { w.set_actuator_position(a, 1.5); }, "position");
   static const std::array<ShapeSpec, 1> shape{sphere("", {0, 0, 0}, 0.01)};
   BodyDesc dynamic;
