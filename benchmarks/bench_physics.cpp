@@ -2,6 +2,7 @@
 // Physics benchmarks: steps per second of the SDH holding a bottle and of the human hand holding a
 // hammer, the same grasps articulated in MuJoCo 2.2 (when found; MujocoScene, the second judge)
 // per scene step of 1/60 s, the ratio, and the time of one full stability suite.
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -133,6 +134,8 @@ template <const auto& M>
 MjcfOptions mujoco_options(double max_time_step) {
   MjcfOptions o;
   o.max_time_step = max_time_step;
+  // A contact MuJoCo resolves at this step: at least two steps long (MjcfOptions).
+  o.contact_timeconst = std::max(o.contact_timeconst, 2.0 * max_time_step);
   for (int i = 0; i < M.nq; ++i)
     if (!(M.joint_spec(i).effort > 0.0)) {
       o.effort.assign(static_cast<std::size_t>(M.nq), 1.0);
