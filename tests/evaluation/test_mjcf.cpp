@@ -39,6 +39,9 @@ TEST_CASE("a hand scene exports as articulated MJCF: mocap hand, joints, motors,
   const std::string xml = to_mjcf(scene, options);
   CHECK(xml.find("<mujoco model=\"schunk_sdh\">") != std::string::npos);
   CHECK(xml.find("<body name=\"hand\" mocap=\"true\"") != std::string::npos);
+  CHECK(xml.find("<body name=\"hand_base\"") != std::string::npos);
+  CHECK(xml.find("<weld name=\"hand_base\" body1=\"hand_base\" body2=\"hand\"") !=
+        std::string::npos);
   CHECK(xml.find("<body name=\"finger_13\"") != std::string::npos);
   CHECK(xml.find("<body name=\"object\"") != std::string::npos);
   CHECK(xml.find("type=\"free\"") != std::string::npos);
@@ -69,8 +72,10 @@ TEST_CASE("a hand scene exports as articulated MJCF: mocap hand, joints, motors,
   const mjModel& m = ms.model();
   CHECK(m.nmocap == 1);
   CHECK(m.nu == 7);
-  CHECK(m.neq == 1);
-  CHECK(m.njnt == 9);  // 8 hinges and the object's free joint
+  CHECK(m.neq == 2);  // the base's weld and the knuckle's coupling
+  CHECK(m.eq_type[0] == mjEQ_WELD);
+  CHECK(m.eq_solref[0] == Approx(0.004));
+  CHECK(m.njnt == 10);  // the base's free joint, 8 hinges and the object's free joint
   CHECK(m.npair == hand_shapes);
   for (int p = 0; p < m.npair; ++p) {
     CHECK(m.pair_friction[5 * p] == Approx(0.9).epsilon(1e-15));
@@ -183,6 +188,7 @@ TEST_CASE("the articulated export writes a model without effort data and refuses
   bad([](MjcfOptions& o) { o.impratio = -1.0; }, "options.impratio");
   bad([](MjcfOptions& o) { o.default_armature = -1.0; }, "options.default_armature");
   bad([](MjcfOptions& o) { o.contact_timeconst = 0.001; }, "options.contact_timeconst");
+  bad([](MjcfOptions& o) { o.hand_timeconst = 0.003; }, "options.hand_timeconst");
   bad([](MjcfOptions& o) { o.report_distance = -1.0; }, "options.report_distance");
   bad([](MjcfOptions& o) { o.effort.assign(3, 1.0); }, "options.effort");
   bad([](MjcfOptions& o) { o.effort = {1, 1, 1, 0, 1, 1, 1}; }, "options.effort[3]");

@@ -5,6 +5,7 @@
 #ifdef TOPOGRASP_HAVE_MUJOCO
 #include "evaluation_test_support.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -65,6 +66,7 @@ TEST_CASE("the exported grasp opens in MuJoCo as the built-in scene has it",
   CHECK((ms.palm_centre() - scene.palm_centre()).norm() < 1e-12);
   CHECK(ms.hand_contacts(0.001) > 0);
   CHECK(ms.deepest_penetration() > 0.0);
+  CHECK(ms.collider_error() < 1e-9);  // a box and capsules: MuJoCo's own colliders, exact
 }
 
 TEST_CASE("a box held by the SDH's motors stays in MuJoCo; motors too weak drop it",
@@ -127,7 +129,7 @@ TEST_CASE("MuJoCo scene gravity moves a free object along it; copies are indepen
   CHECK(twin.gravity() == ms.gravity());
 }
 
-TEST_CASE("the hand moves to the pose set, interpolated over the step", "[evaluation][mujoco]") {
+TEST_CASE("the hand moves to the pose set; its welded base follows", "[evaluation][mujoco]") {
   MujocoScene ms(sdh_box_scene(true), sdh_motors(1.0));
   ms.set_gravity(Vec3::Zero());
   Eigen::Isometry3d target = ms.hand_pose();
@@ -136,11 +138,69 @@ TEST_CASE("the hand moves to the pose set, interpolated over the step", "[evalua
   ms.set_hand_pose(target);
   REQUIRE(ms.step() == Status::success);
   const mjData& d = ms.data();
+  const mjModel& m = ms.model();
   CHECK((Vec3(d.mocap_pos[0], d.mocap_pos[1], d.mocap_pos[2]) - target.translation()).norm() <
         1e-12);
-  const int hand = mj_name2id(&ms.model(), mjOBJ_BODY, "hand");
+  const int hand = mj_name2id(&m, mjOBJ_BODY, "hand");
   CHECK((Vec3(d.xpos[3 * hand], d.xpos[3 * hand + 1], d.xpos[3 * hand + 2]) - target.translation())
             .norm() < 1e-12);
+  // The base is a free body: it has the velocity of its motion, and reaches the target within a
+  // few of the weld's 4 ms time constants.
+  const int base = mj_name2id(&m, mjOBJ_BODY, "hand_base");
+  REQUIRE(base >= 0);
+  const int dof = m.jnt_dofadr[m.body_jntadr[base]];
+  CHECK(Vec3(d.qvel[dof], d.qvel[dof + 1], d.qvel[dof + 2]).norm() > 0.5);  // 5 cm in 1/60 s
+  for (int i = 0; i < 6; ++i) REQUIRE(ms.step() == Status::success);
+  const Eigen::Isometry3d T_base =
+      Eigen::Translation3d(d.xpos[3 * base], d.xpos[3 * base + 1], d.xpos[3 * base + 2]) *
+      Eigen::Quaterniond(d.xquat[4 * base], d.xquat[4 * base + 1], d.xquat[4 * base + 2],
+                         d.xquat[4 * base + 3]);
+  CHECK((T_base.translation() - target.translation()).norm() < 1e-4);
+  CHECK(Eigen::AngleAxisd(T_base.linear().transpose() * target.linear()).angle() < 1e-3);
+}
+
+TEST_CASE("a held box goes with a hand that moves fast: its contacts drag it",
+          "[evaluation][mujoco]") {
+  // The hand is carried with a velocity (the weld), so friction at the fingers carries the box:
+  // 30 cm sideways and a 45 degree turn in 0.25 s, then 0.25 s at rest.
+  MujocoScene ms(sdh_box_scene(), sdh_motors(1.0));
+  ms.set_gravity(Vec3::Zero());
+  const Eigen::Isometry3d start = ms.object_in_hand();
+  const Eigen::Isometry3d from = ms.hand_pose();
+  for (int i = 1; i <= 30; ++i) {
+    const double a = std::min(1.0, i / 15.0);
+    ms.set_hand_pose(Eigen::Translation3d(0.3 * a, 0.0, 0.0) * from *
+                     Eigen::AngleAxisd(a * 0.785, Vec3::UnitX()));
+    REQUIRE(ms.step() == Status::success);
+  }
+  CHECK(moved(ms, start) < 0.005);
+  CHECK(Eigen::AngleAxisd(start.linear().transpose() * ms.object_in_hand().linear()).angle() <
+        0.05);
+}
+
+TEST_CASE("collider_error measures how much deeper MuJoCo takes an overlap than it is",
+          "[evaluation][mujoco]") {
+  // A finger capsule across a hammer handle (a cylinder along z) near its end, overlapping it by
+  // 1.5 mm (the pair of a grasp of the default run). MuJoCo 2.2's convex collider (MPR) measures
+  // it exactly without a margin, and 23 mm deep with a 5 mm margin (the shapes grown by it).
+  const auto scene_with_margin = [](const char* margin) {
+    return std::string(
+               "<mujoco><worldbody><body name=\"hand\" mocap=\"true\" "
+               "pos=\"-0.0152 -0.0217 0.1155\"><geom name=\"cap\" type=\"capsule\" "
+               "size=\"0.014 0.04325\" zaxis=\"-0.846 0.531 0.034\" margin=\"") +
+           margin + "\" gap=\"" + margin +
+           "\"/></body><body name=\"object\"><joint type=\"free\"/><geom type=\"cylinder\" "
+           "size=\"0.014 0.14\"/></body></worldbody></mujoco>";
+  };
+  const MujocoScene exact(scene_with_margin("0"));
+  REQUIRE(exact.hand_contacts() == 1);
+  CHECK(exact.deepest_penetration() == Approx(0.0015).margin(1e-4));
+  CHECK(exact.collider_error() < 1e-6);
+  const MujocoScene grown(scene_with_margin("0.005"));
+  REQUIRE(grown.hand_contacts() == 1);
+  CHECK(grown.deepest_penetration() > 0.02);
+  CHECK(grown.collider_error() > 0.02);
+  CHECK(grown.collider_error() == Approx(grown.deepest_penetration() - 0.0015).margin(1e-4));
 }
 
 TEST_CASE("MujocoScene refuses bad input with readable errors", "[evaluation][mujoco]") {

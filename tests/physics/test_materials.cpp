@@ -15,7 +15,7 @@ using namespace topograsp;
 
 namespace {
 
-constexpr double g = standard_gravity;
+using test::g;
 
 // Two cubes of side 0.1 m at x = -0.1 and x = +0.1.
 const std::array<ShapeSpec, 2> two_cubes{box("", at(-0.1, 0, 0), {0.05, 0.05, 0.05}),

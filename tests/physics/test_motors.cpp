@@ -15,12 +15,12 @@ using namespace topograsp;
 
 namespace {
 
-constexpr double g = standard_gravity;
-constexpr double length = 0.1;   // the finger link's length (m)
-constexpr double thick = 0.005;  // the link's half thickness (m)
-constexpr double half = 0.015;   // the held box's half extent (m)
-constexpr double mass = 0.2;     // kg
-constexpr double lever = 0.07;   // where the box rests on the link, from the joint axis (m)
+using test::g;
+constexpr double length = 0.1;      // the finger link's length (m)
+constexpr double thick = 0.005;     // the link's half thickness (m)
+constexpr double box_half = 0.015;  // the held box's half extent (m)
+constexpr double box_mass = 0.2;    // kg
+constexpr double lever = 0.07;      // where the box rests on the link, from the joint axis (m)
 
 // A horizontal finger: a box link along +x from a revolute joint about y at the origin, driven
 // by actuator 0, and body 0 the link. Positive rotation about y turns +x down (towards -z).
@@ -61,13 +61,13 @@ struct Finger {
   }
 };
 
-// A box of `mass` resting on the finger at `lever` from the axis.
+// A box of `box_mass` resting on the finger at `lever` from the axis.
 int add_box(World<double>& w, double x) {
-  static const std::array<ShapeSpec, 1> shape{box("", Pose{}, {half, half, half})};
+  static const std::array<ShapeSpec, 1> shape{box("", Pose{}, {box_half, box_half, box_half})};
   BodyDesc d;
-  d.pose = at(x, 0.0, thick + half);
+  d.pose = at(x, 0.0, thick + box_half);
   d.shapes = shape;
-  d.mass = mass;
+  d.mass = box_mass;
   d.friction = 1.0;
   return w.add_body(d);
 }
@@ -75,7 +75,7 @@ int add_box(World<double>& w, double x) {
 }  // namespace
 
 TEST_CASE("A finger holds a weight below its torque limit and drops one above it", "[motors]") {
-  const double load = mass * g * lever;  // the weight's torque about the joint (N m)
+  const double load = box_mass * g * lever;  // the weight's torque about the joint (N m)
   for (const double ratio : {0.7, 1.4}) {
     Finger f(ratio * load);
     const int b = add_box(f.w, lever);

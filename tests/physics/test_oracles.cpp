@@ -13,7 +13,7 @@ using namespace topograsp;
 
 namespace {
 
-constexpr double g = standard_gravity;
+using test::g;
 
 // A large fixed box whose top face is the plane z = 0 (rotated by pitch about y through the
 // origin).

@@ -12,12 +12,12 @@ using namespace topograsp;
 
 namespace {
 
-constexpr double g = standard_gravity;
-constexpr double half = 0.03;      // the held box's half extent (m)
-constexpr double mass = 0.2;       // kg
-constexpr double overlap = 0.002;  // each plate's overlap with the box (m)
+using test::g;
+constexpr double held_half = 0.03;  // the held box's half extent (m)
+constexpr double held_mass = 0.2;   // kg
+constexpr double overlap = 0.002;   // each plate's overlap with the box (m)
 
-// A pinch: plates at x = -+(half + 0.01 - overlap) around a box (or sphere) at the origin of
+// A pinch: plates at x = -+(held_half + 0.01 - overlap) around a box (or sphere) at the origin of
 // `frame`; bodies 0 and 1 are the plates, 2 the held body.
 struct Pinch {
   World<double> w;
@@ -35,16 +35,17 @@ struct Pinch {
       w.add_body(d);
     }
     static std::array<ShapeSpec, 1> held;
-    held[0] = sphere_body ? sphere("", {0, 0, 0}, half) : box("", Pose{}, {half, half, half});
+    held[0] = sphere_body ? sphere("", {0, 0, 0}, held_half)
+                          : box("", Pose{}, {held_half, held_half, held_half});
     BodyDesc d;
     d.pose = to_pose(frame);
     d.shapes = held;
-    d.mass = mass;
+    d.mass = held_mass;
     d.friction = mu;
     w.add_body(d);
   }
   static Eigen::Isometry3d plate_pose(int side, const Eigen::Isometry3d& f) {
-    const double x = (half + 0.01 - overlap) * (side == 0 ? -1.0 : 1.0);
+    const double x = (held_half + 0.01 - overlap) * (side == 0 ? -1.0 : 1.0);
     return f * Eigen::Translation3d(x, 0.0, 0.0);
   }
   // Moves the pinch frame (the plates follow in one step).
@@ -76,7 +77,7 @@ TEST_CASE("the squeeze force is the hand stiffness times the overlap", "[physics
 
 TEST_CASE("a pinch holds a box iff 2 mu F >= m g", "[physics][oracle][pinch]") {
   const double F = measured_force();
-  const double mu_edge = mass * g / (2.0 * F);
+  const double mu_edge = held_mass * g / (2.0 * F);
   const auto drop = [&](double mu) {
     Pinch p(mu);
     for (int i = 0; i < 60; ++i) REQUIRE(p.step() == Status::success);
@@ -95,7 +96,7 @@ TEST_CASE("a rotated pinch holds iff friction covers gravity plus the centripeta
   // The pinch turns about the world z axis at radius r; at omega^2 r = g the friction must carry
   // m sqrt(g^2 + (omega^2 r)^2) = m g sqrt(2) in the plates' plane.
   const double r = 0.2, omega = std::sqrt(g / r), ramp = 0.5;
-  const double mu_edge = mass * g * std::sqrt(2.0) / (2.0 * F);
+  const double mu_edge = held_mass * g * std::sqrt(2.0) / (2.0 * F);
   const auto slip = [&](double mu) {
     const Eigen::Isometry3d start(Eigen::Translation3d(0.0, r, 0.0));
     Pinch p(mu, StepperOptions{}, false, start);
@@ -128,7 +129,7 @@ TEST_CASE("torsional friction slows a pinched spinning sphere at mu r F", "[phys
   const double F = p.force();
   const int n = 5;
   for (int i = 0; i < n; ++i) REQUIRE(p.step() == Status::success);
-  const double inertia = 0.4 * mass * half * half;
+  const double inertia = 0.4 * held_mass * held_half * held_half;
   const double alpha = 2.0 * mu * o.torsional_friction_radius * F / inertia;
   CHECK((w0 - p.w.body(2).w.x()) / (n * o.time_step) == Approx(alpha).epsilon(0.05));
   SECTION("without it, nothing stops the spin about the contact normal") {

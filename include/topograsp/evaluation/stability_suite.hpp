@@ -113,6 +113,11 @@ struct StabilityRecord {
   Status status = Status::success;  ///< the first failed step's status, else success
 };
 
+/// A judge whose collider reports the deepest hand-object contact more than this (m) deeper
+/// than it is (StabilityResult::collider_error) judged a different grasp from the one closed:
+/// results.json gives the engines' agreement with and without such verdicts.
+inline constexpr double k_collider_tolerance = 0.001;
+
 /// The verdict of stability_suite() and a record per test.
 struct StabilityResult {
   /// The paper's shake and all six gravity directions passed (the hard shake does not count).
@@ -122,6 +127,11 @@ struct StabilityResult {
   std::string reason;
   double weight = 0.0;               ///< m |g| of the object (N)
   double closing_penetration = 0.0;  ///< deepest overlap when closing ended (m)
+  /// How much deeper than the exact overlap (geometry's signed_distance) the engine's collider
+  /// reports its deepest hand-object contact when closing ended (m, >= 0): the scene's
+  /// collider_error() where it has one (MujocoScene), 0 for a scene whose contacts are exact (the
+  /// built-in HandScene).
+  double collider_error = 0.0;
   /// shake, gravity +x, -x, +y, -y, +z, -z (hand frame), hard_shake.
   std::array<StabilityRecord, k_stability_tests> tests{};
   [[nodiscard]] const StabilityRecord& operator[](StabilityTest t) const noexcept {
@@ -317,6 +327,7 @@ template <GraspScene Scene>
   StabilityResult out;
   out.weight = mass * magnitude;
   out.closing_penetration = closed.deepest_penetration();
+  if constexpr (requires { closed.collider_error(); }) out.collider_error = closed.collider_error();
   const bool too_deep = !(out.closing_penetration <= options.max_penetration);
   const Eigen::Isometry3d reference = closed.object_in_hand();
   const Eigen::Isometry3d start = closed.hand_pose();

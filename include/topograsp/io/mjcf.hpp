@@ -38,8 +38,12 @@ struct MjcfOptions {
   double default_armature = 0.001;
   /// Contacts are reported (mjData::contact, MujocoScene::hand_contacts) out to this distance (m)
   /// and act only on overlap: each pair gets margin = gap = this value, so MuJoCo's constraint
-  /// starts at distance 0 exactly as without it. Default 0.005.
-  double report_distance = 0.005;
+  /// starts at distance 0 exactly as without it. Default 0: MuJoCo 2.2 measures pairs with a
+  /// cylinder by its general convex collider (MPR), which runs on the shapes grown by the
+  /// margin, and with any margin it can take the wrong way out: a capsule overlapping a cylinder
+  /// by 1.5 mm was reported 23 mm deep with a 5 mm margin, and 3.2 mm as 19.7 mm with 1 mm
+  /// (exact without). MujocoScene::collider_error() measures this per grasp.
+  double report_distance = 0.0;
   /// The time constant (s) of every hand-object contact (the pair's solref, damping ratio 1).
   /// MuJoCo's contact is a spring whose stiffness scales with the effective mass m as about
   /// m / timeconst^2: 0.01 s gives a 0.6 kg object about 6000 N/m, near the built-in finger pads'
@@ -47,6 +51,10 @@ struct MjcfOptions {
   /// lets a held object turn in the grip several times as far. At least 2 time steps, as MuJoCo
   /// asks (0.01 s is 5 of the 1.85 ms steps). Default 0.01.
   double contact_timeconst = 0.01;
+  /// The time constant (s) of the weld that makes the hand's base follow the mocap body `hand`
+  /// (solref, damping ratio 1): the shorter, the stiffer. At least 2 * max_time_step, as MuJoCo
+  /// asks. Default 0.004.
+  double hand_timeconst = 0.004;
   /// Overrides the effort limit of each configuration entry (N m or N, dim nq, each > 0); empty:
   /// the model's LinkSpec::effort.
   std::vector<double> effort;
@@ -121,11 +129,15 @@ inline void require_mjcf_options(const MjcfOptions& o, int nq) {
   require_positive(o.impratio, "options.impratio");
   require_non_negative(o.default_armature, "options.default_armature");
   require_non_negative(o.report_distance, "options.report_distance");
-  if (!(o.contact_timeconst >= 2.0 * o.max_time_step && o.contact_timeconst < 1e3))
-    throw_invalid_argument("options.contact_timeconst",
-                           "expected at least 2 time steps (2 * options.max_time_step) and under "
-                           "1000 s, got " +
-                               std::to_string(o.contact_timeconst));
+  const auto require_timeconst = [&](double t, const char* name) {
+    if (!(t >= 2.0 * o.max_time_step && t < 1e3))
+      throw_invalid_argument(name,
+                             "expected at least 2 time steps (2 * options.max_time_step) and under "
+                             "1000 s, got " +
+                                 std::to_string(t));
+  };
+  require_timeconst(o.contact_timeconst, "options.contact_timeconst");
+  require_timeconst(o.hand_timeconst, "options.hand_timeconst");
   if (!o.effort.empty() && static_cast<int>(o.effort.size()) != nq)
     throw_invalid_argument("options.effort", "expected " + std::to_string(nq) +
                                                  " entries (one per configuration entry) or none, "
@@ -160,20 +172,8 @@ inline void write_mjcf_pose(std::ostream& os, const Eigen::Isometry3d& T) {
 inline void write_mjcf_geom(std::ostream& os, std::string_view indent, const std::string& name,
                             const ShapeSpec& s, const Eigen::Isometry3d& T, double mu,
                             double torsion) {
-  os << indent << "<geom name=\"" << name << "\" type=\"" << to_string(s.type) << "\" size=\"";
-  switch (s.type) {
-    case ShapeType::sphere:
-      os << s.size[0];
-      break;
-    case ShapeType::capsule:
-    case ShapeType::cylinder:
-      os << s.size[0] << ' ' << s.size[1];
-      break;
-    case ShapeType::box:
-      os << s.size[0] << ' ' << s.size[1] << ' ' << s.size[2];
-      break;
-  }
-  os << '"';
+  os << indent << "<geom name=\"" << name << '"';
+  write_mjcf_shape(os, s);
   write_mjcf_pose(os, T);
   os << " friction=\"" << mu << ' ' << mu * torsion << " 0.0001\" condim=\""
      << (torsion > 0.0 ? 4 : 3) << "\"/>\n";
@@ -258,10 +258,15 @@ void write_mjcf(std::ostream& os, const World<S>& world, const Eigen::Isometry3d
 /// object (the scene contract of docs/evaluation.md):
 /// - `<option>`: the scene's time step split into mjcf_substeps(time_step, max_time_step) equal
 ///   steps, the scene's gravity, `cone="elliptic"`, options.impratio, `integrator="implicit"`;
-/// - a mocap body named `hand` at the hand frame (the model's root link) carrying the root's
-///   shapes and, nested, every other link as a body (named as the link) at its joint origin,
-///   with its joint (hinge or slide about the model's axis, `range` = limits, `armature` =
-///   LinkSpec::armature or options.default_armature when 0, `damping` = kv) and its shapes;
+/// - a mocap body named `hand` at the hand frame (the target the scene moves) and the hand's
+///   base, a body named `hand_base` with a free joint (the model's root link: its shapes and
+///   mass), held to `hand` by a weld equality (solref options.hand_timeconst, damping ratio 1).
+///   A mocap body has no velocity in MuJoCo: shapes carried by one would jump from step to step
+///   and drag nothing by friction, where the welded base moves with the velocity the built-in
+///   stepper gives its kinematic hand. Nested in the base, every other link as a body (named as
+///   the link) at its joint origin, with its joint (hinge or slide about the model's axis,
+///   `range` = limits, `armature` = LinkSpec::armature or options.default_armature when 0,
+///   `damping` = kv) and its shapes;
 /// - link inertia: LinkSpec mass at LinkSpec com with the inertia of a uniform sphere of that
 ///   mass reaching the link's farthest shape point; a link of mass 0 (no data) gets its inertia
 ///   from its shapes at MuJoCo's default density (1000 kg/m^3), a link with neither is bounded by
@@ -283,12 +288,13 @@ void write_mjcf(std::ostream& os, const World<S>& world, const Eigen::Isometry3d
 ///   mu x torsional_friction_radius (3 without), margin = gap = options.report_distance, solref
 ///   = options.contact_timeconst with damping ratio 1;
 /// - a site named `palm` at the model's palm centre (a hand model only);
-/// - `<keyframe><key name="grasp">` with qpos (the joints' values and the object's pose), ctrl
-///   (the targets, clamped to the limits), mpos and mquat (the hand pose).
+/// - `<keyframe><key name="grasp">` with qpos (the base's pose, the joints' values and the
+///   object's pose), ctrl (the targets, clamped to the limits), mpos and mquat (the hand pose).
 /// Geoms are named `hand_<collider>` (the World's collider index) and `object_<k>`. Throws
 /// topograsp::invalid_argument naming the option for a bad option (non-positive max_time_step,
 /// or impratio; negative default_armature or
-/// report_distance; a contact_timeconst under 2 * max_time_step; options.effort of the wrong size
+/// report_distance; a contact_timeconst or hand_timeconst under 2 * max_time_step; options.effort
+/// of the wrong size
 /// or with an entry that is not positive).
 template <const auto& M, class S>
 void write_mjcf(std::ostream& os, const HandScene<M, S>& scene, const MjcfOptions& options) {
@@ -334,16 +340,21 @@ void write_mjcf(std::ostream& os, const HandScene<M, S>& scene, const MjcfOption
     const Link& link = M.links[static_cast<std::size_t>(l)];
     const std::string indent(static_cast<std::size_t>(2 * depth + 4), ' ');
     if (l == 0) {
+      // The target (mocap, no geoms) and the hand's base, a free body welded to it: a mocap
+      // body has no velocity in MuJoCo, so a hand carried by one would move its contacts
+      // without dragging the object by friction.
       os << indent << "<body name=\"hand\" mocap=\"true\"";
       detail::write_mjcf_pose(os, scene.hand_pose());
-      os << ">\n";
+      os << "/>\n" << indent << "<body name=\"hand_base\"";
+      detail::write_mjcf_pose(os, scene.hand_pose());
+      os << ">\n" << indent << "  <joint name=\"hand_base\" type=\"free\"/>\n";
     } else {
       os << indent << "<body name=\"" << link.spec.name.view() << '"';
       detail::write_mjcf_pose(os, link.spec.origin.isometry());
       os << ">\n";
     }
     const std::string in = indent + "  ";
-    if (l != 0 && link.spec.mass > 0.0) {
+    if (link.spec.mass > 0.0) {
       const Vec3 c(link.spec.com[0], link.spec.com[1], link.spec.com[2]);
       double r = 0.0;
       for (const Shape& s : M.shapes)
@@ -430,17 +441,13 @@ void write_mjcf(std::ostream& os, const HandScene<M, S>& scene, const MjcfOption
   }
   os << "  </contact>\n";
 
-  bool mimic = false;
+  os << "  <equality>\n    <weld name=\"hand_base\" body1=\"hand_base\" body2=\"hand\" solref=\""
+     << options.hand_timeconst << " 1\"/>\n";
   for (const Link& l : M.links)
-    mimic = mimic || (l.spec.type != JointType::fixed && !l.spec.mimic.empty());
-  if (mimic) {
-    os << "  <equality>\n";
-    for (const Link& l : M.links)
-      if (l.spec.type != JointType::fixed && !l.spec.mimic.empty())
-        os << "    <joint joint1=\"" << l.spec.name.view() << "\" joint2=\"" << l.spec.mimic.view()
-           << "\" polycoef=\"" << l.spec.offset << ' ' << l.spec.multiplier << " 0 0 0\"/>\n";
-    os << "  </equality>\n";
-  }
+    if (l.spec.type != JointType::fixed && !l.spec.mimic.empty())
+      os << "    <joint joint1=\"" << l.spec.name.view() << "\" joint2=\"" << l.spec.mimic.view()
+         << "\" polycoef=\"" << l.spec.offset << ' ' << l.spec.multiplier << " 0 0 0\"/>\n";
+  os << "  </equality>\n";
 
   os << "  <actuator>\n";
   for (int i = 0; i < M.nq; ++i) {
@@ -457,7 +464,11 @@ void write_mjcf(std::ostream& os, const HandScene<M, S>& scene, const MjcfOption
   }
   os << "  </actuator>\n";
 
-  os << "  <keyframe>\n    <key name=\"grasp\" qpos=\"";
+  const Eigen::Isometry3d& T_hand = scene.hand_pose();
+  const Eigen::Quaterniond q_hand(T_hand.linear());
+  os << "  <keyframe>\n    <key name=\"grasp\" qpos=\"" << T_hand.translation().x() << ' '
+     << T_hand.translation().y() << ' ' << T_hand.translation().z() << ' ' << q_hand.w() << ' '
+     << q_hand.x() << ' ' << q_hand.y() << ' ' << q_hand.z() << ' ';
   for (const int l : joint_order) os << joint_value(l) << ' ';
   const Eigen::Isometry3d T_object = object.pose();
   const Eigen::Quaterniond q_object(T_object.linear());
@@ -468,9 +479,8 @@ void write_mjcf(std::ostream& os, const HandScene<M, S>& scene, const MjcfOption
     const LinkSpec& j = M.joint_spec(i);
     os << (i > 0 ? " " : "") << std::clamp(motors.target[i], j.lower, j.upper);
   }
-  const Eigen::Quaterniond q_hand(scene.hand_pose().linear());
   os << '"';
-  detail::write_mjcf_vec3(os, "mpos", scene.hand_pose().translation());
+  detail::write_mjcf_vec3(os, "mpos", T_hand.translation());
   os << " mquat=\"" << q_hand.w() << ' ' << q_hand.x() << ' ' << q_hand.y() << ' ' << q_hand.z()
      << "\"/>\n  </keyframe>\n</mujoco>\n";
   os.flags(flags);

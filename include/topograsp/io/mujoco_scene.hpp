@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -25,6 +26,7 @@
 #include <topograsp/core/status.hpp>
 #include <topograsp/evaluation/grasp_scene.hpp>
 #include <topograsp/evaluation/hand_scene.hpp>
+#include <topograsp/geometry/signed_distance.hpp>
 #include <topograsp/io/mjcf.hpp>
 
 namespace topograsp {
@@ -78,16 +80,18 @@ inline Eigen::Isometry3d mujoco_pose(const mjtNum* pos, const mjtNum* quat) {
 
 /// A grasp simulated in MuJoCo 2.2 from an MJCF scene that keeps the contract of the articulated
 /// export (write_mjcf(os, HandScene, MjcfOptions), docs/evaluation.md): a mocap body named `hand`
-/// (the hand frame) carrying the hand, a body named `object` with a free joint, and optionally a
-/// keyframe named `grasp` (the start state) and a site named `palm` (the palm centre).
+/// (the hand frame), which either carries the hand itself or is the target of a body named
+/// `hand_base` that carries it (welded to `hand`, as the export writes it), a body named `object`
+/// with a free joint, and optionally a keyframe named `grasp` (the start state) and a site named
+/// `palm` (the palm centre).
 ///
-/// One step() is one step of the built-in scene: `substeps` MuJoCo steps, while the hand moves
-/// from its pose to the one set by set_hand_pose() (positions interpolated linearly, rotations by
-/// slerp). The model is loaded once and shared, read-only, by copies; each copy has its own
-/// mjData (mj_copyData), so copies are independent and may run on different threads. Gravity is
-/// per scene: the model keeps the gravity it was written with and a different one is applied as
-/// the force m (g - g_model) at every body's centre of mass (mjData::xfrc_applied), which is the
-/// same dynamics.
+/// One step() is one step of the built-in scene: `substeps` MuJoCo steps, while the mocap body
+/// moves from its pose to the one set by set_hand_pose() (positions interpolated linearly,
+/// rotations by slerp). The model is loaded once and shared, read-only, by copies; each copy has
+/// its own mjData (mj_copyData), so copies are independent and may run on different threads.
+/// Gravity is per scene: the model keeps the gravity it was written with and a different one is
+/// applied as the force m (g - g_model) at every body's centre of mass (mjData::xfrc_applied),
+/// which is the same dynamics.
 class MujocoScene {
  public:
   /// Loads \p mjcf (MJCF text, read from memory) and starts from its `grasp` keyframe if it has
@@ -106,6 +110,8 @@ class MujocoScene {
     if (hand_ < 0 || m->body_mocapid[hand_] < 0)
       detail::throw_invalid_argument("mjcf", "expected a mocap body named \"hand\"");
     mocap_ = m->body_mocapid[hand_];
+    base_ = mj_name2id(m, mjOBJ_BODY, "hand_base");
+    if (base_ < 0) base_ = hand_;
     object_ = mj_name2id(m, mjOBJ_BODY, "object");
     if (object_ < 0 || m->body_jntnum[object_] != 1 ||
         m->jnt_type[m->body_jntadr[object_]] != mjJNT_FREE)
@@ -137,6 +143,7 @@ class MujocoScene {
         substeps_(o.substeps_),
         hand_(o.hand_),
         mocap_(o.mocap_),
+        base_(o.base_),
         object_(o.object_),
         palm_(o.palm_),
         hand_pose_(o.hand_pose_),
@@ -153,6 +160,7 @@ class MujocoScene {
     substeps_ = o.substeps_;
     hand_ = o.hand_;
     mocap_ = o.mocap_;
+    base_ = o.base_;
     object_ = o.object_;
     palm_ = o.palm_;
     hand_pose_ = o.hand_pose_;
@@ -221,19 +229,22 @@ class MujocoScene {
   [[nodiscard]] Eigen::Isometry3d object_pose() const noexcept {
     return detail::mujoco_pose(data_->xpos + 3 * object_, data_->xquat + 4 * object_);
   }
-  /// The object frame in the hand frame (hand_pose()).
+  /// The object frame in the hand frame: the frame of the body that carries the hand
+  /// (`hand_base` where the hand follows the mocap body through a weld, else `hand`).
   [[nodiscard]] Eigen::Isometry3d object_in_hand() const noexcept {
-    return hand_pose_.inverse() * object_pose();
+    return detail::mujoco_pose(data_->xpos + 3 * base_, data_->xquat + 4 * base_).inverse() *
+           object_pose();
   }
   /// The object's centre of mass (world, m).
   [[nodiscard]] Vec3 object_com() const noexcept {
     return Vec3(data_->xipos[3 * object_], data_->xipos[3 * object_ + 1],
                 data_->xipos[3 * object_ + 2]);
   }
-  /// The palm centre (world, m): the site `palm`, or the hand frame's origin without one.
+  /// The palm centre (world, m): the site `palm`, or the origin of the body that carries the
+  /// hand without one.
   [[nodiscard]] Vec3 palm_centre() const noexcept {
     if (palm_ < 0)
-      return Vec3(data_->xpos[3 * hand_], data_->xpos[3 * hand_ + 1], data_->xpos[3 * hand_ + 2]);
+      return Vec3(data_->xpos[3 * base_], data_->xpos[3 * base_ + 1], data_->xpos[3 * base_ + 2]);
     return Vec3(data_->site_xpos[3 * palm_], data_->site_xpos[3 * palm_ + 1],
                 data_->site_xpos[3 * palm_ + 2]);
   }
@@ -265,6 +276,26 @@ class MujocoScene {
     for (int i = 0; i < data_->ncon; ++i)
       if (is_hand_object(data_->contact[i])) deepest = std::max(deepest, -data_->contact[i].dist);
     return deepest;
+  }
+  /// How much deeper than the exact overlap MuJoCo's collider reports its hand-object contacts
+  /// now (m, >= 0): the largest d_exact - d_mujoco over the hand-object contacts, d_exact the
+  /// signed distance of the two geoms (geometry's signed_distance, exact to rounding for these
+  /// shapes) and d_mujoco mjContact::dist. MuJoCo 2.2 measures a pair with a cylinder by its
+  /// general convex collider (MPR), whose depth is taken along the line between the shapes'
+  /// centres rather than the shortest way out: a capsule that overlaps the end of a long
+  /// cylinder by 1.5 mm is reported 23 mm deep, and pushed out by the force of that depth.
+  /// Geoms of other types than sphere, capsule, cylinder and box are skipped.
+  [[nodiscard]] double collider_error() const noexcept {
+    double worst = 0.0;
+    for (int i = 0; i < data_->ncon; ++i) {
+      const mjContact& c = data_->contact[i];
+      if (!is_hand_object(c)) continue;
+      const auto a = primitive(c.geom1);
+      const auto b = primitive(c.geom2);
+      if (!a || !b) continue;
+      worst = std::max(worst, signed_distance(*a, *b).distance - c.dist);
+    }
+    return worst;
   }
   /// The object's mass (kg).
   [[nodiscard]] double object_mass() const noexcept { return model_->body_mass[object_]; }
@@ -301,11 +332,43 @@ class MujocoScene {
     return to_mjcf(scene, options);
   }
 
+  // Geom g as a primitive at its current pose; nullopt for a type it has no primitive of.
+  [[nodiscard]] std::optional<Primitive> primitive(int g) const noexcept {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    for (int i = 0; i < 9; ++i) T.linear()(i / 3, i % 3) = data_->geom_xmat[9 * g + i];
+    T.translation() =
+        Vec3(data_->geom_xpos[3 * g], data_->geom_xpos[3 * g + 1], data_->geom_xpos[3 * g + 2]);
+    const mjtNum* s = model_->geom_size + 3 * g;
+    Primitive p;
+    p.R = T.linear();
+    p.p = T.translation();
+    switch (model_->geom_type[g]) {
+      case mjGEOM_SPHERE:
+        p.type = ShapeType::sphere;
+        p.size = Vec3(s[0], 0.0, 0.0);
+        return p;
+      case mjGEOM_CAPSULE:
+        p.type = ShapeType::capsule;
+        p.size = Vec3(s[0], s[1], 0.0);
+        return p;
+      case mjGEOM_CYLINDER:
+        p.type = ShapeType::cylinder;
+        p.size = Vec3(s[0], s[1], 0.0);
+        return p;
+      case mjGEOM_BOX:
+        p.type = ShapeType::box;
+        p.size = Vec3(s[0], s[1], s[2]);
+        return p;
+      default:
+        return std::nullopt;
+    }
+  }
+
   [[nodiscard]] bool is_hand_object(const mjContact& c) const noexcept {
     const int b1 = model_->geom_bodyid[c.geom1];
     const int b2 = model_->geom_bodyid[c.geom2];
     const int other = b1 == object_ ? b2 : (b2 == object_ ? b1 : -1);
-    return other >= 0 && model_->body_rootid[other] == hand_;
+    return other >= 0 && model_->body_rootid[other] == base_;
   }
 
   [[nodiscard]] int bad_number_warnings() const noexcept {
@@ -327,6 +390,7 @@ class MujocoScene {
   int substeps_ = 1;
   int hand_ = -1;
   int mocap_ = -1;
+  int base_ = -1;  // the body that carries the hand: `hand_base`, or the mocap `hand` itself
   int object_ = -1;
   int palm_ = -1;
   Eigen::Isometry3d hand_pose_ = Eigen::Isometry3d::Identity();

@@ -93,6 +93,7 @@ inline void set_second_and_quality(Json& rec, const std::optional<StabilityResul
     j.set("engine", std::string(name));
     j.set("stable", second->stable);
     j.set("reason", second->reason);
+    j.set("collider_error", second->collider_error);
     set_stability(j, &*second);
     rec.set("second_judge", j);
   } else {
@@ -110,15 +111,31 @@ inline void set_second_and_quality(Json& rec, const std::optional<StabilityResul
   }
 }
 
-// Each engine's stable count over the grasps with both verdicts, and how often they agree.
-inline Json agreement_summary(const std::vector<std::pair<bool, bool>>& verdicts,
-                              std::string_view second_name) {
+// A grasp judged by both engines: the first's verdict, the second's, and whether both colliders
+// measured the closed grasp's contacts to within k_collider_tolerance (the built-in's is exact;
+// with --judge mujoco MuJoCo's verdict is the first).
+struct Verdicts {
+  bool first = false;
+  bool second = false;
+  bool exact = false;
+};
+
+inline Verdicts verdicts_of(const StabilityResult& first, const StabilityResult& second) {
+  return {first.stable, second.stable,
+          std::max(first.collider_error, second.collider_error) <= k_collider_tolerance};
+}
+
+// Each engine's stable count over the grasps with both verdicts, and how often they agree: over
+// all of them, and over those whose colliders were exact at the start.
+inline Json agreement_summary(const std::vector<Verdicts>& verdicts, std::string_view second_name) {
   if (verdicts.empty()) return Json();
-  int first = 0, second = 0, agree = 0;
-  for (const auto& [a, b] : verdicts) {
-    first += a ? 1 : 0;
-    second += b ? 1 : 0;
-    agree += a == b ? 1 : 0;
+  int first = 0, second = 0, agree = 0, exact = 0, agree_exact = 0;
+  for (const Verdicts& v : verdicts) {
+    first += v.first ? 1 : 0;
+    second += v.second ? 1 : 0;
+    agree += v.first == v.second ? 1 : 0;
+    exact += v.exact ? 1 : 0;
+    agree_exact += v.exact && v.first == v.second ? 1 : 0;
   }
   const double n = static_cast<double>(verdicts.size());
   Json s = Json::object();
@@ -128,6 +145,8 @@ inline Json agreement_summary(const std::vector<std::pair<bool, bool>>& verdicts
   s.set("stable_second", second);
   s.set("rate_second", second / n);
   s.set("agreement", agree / n);
+  s.set("judged_exact", exact);
+  s.set("agreement_exact", exact > 0 ? Json(agree_exact / static_cast<double>(exact)) : Json());
   return s;
 }
 
@@ -244,11 +263,11 @@ inline void check_scene_names(const ExperimentOptions& options) {
     o.set("stable_human", r.stable_human());
     const std::string& second_name = options.transfer.sim.second_judge_name;
     std::vector<const StabilityResult*> set;
-    std::vector<std::pair<bool, bool>> verdicts;
+    std::vector<detail::Verdicts> verdicts;
     for (const HumanGrasp& g : r.human)
       if (g.reached) {
         set.push_back(&g.stability);
-        if (g.second) verdicts.emplace_back(g.stability.stable, g.second->stable);
+        if (g.second) verdicts.push_back(detail::verdicts_of(g.stability, *g.second));
       }
     Json human = detail::stability_summary(set);
     human.set("second_judge", detail::agreement_summary(verdicts, second_name));
@@ -259,7 +278,7 @@ inline void check_scene_names(const ExperimentOptions& options) {
       verdicts.clear();
       for (const RobotGrasp& t : r.transfers[m]) {
         set.push_back(t.planned ? &t.stability : nullptr);
-        if (t.planned && t.second) verdicts.emplace_back(t.stability.stable, t.second->stable);
+        if (t.planned && t.second) verdicts.push_back(detail::verdicts_of(t.stability, *t.second));
       }
       Json s = detail::stability_summary(set);
       s.set("tested", r.methods[m].tested);
