@@ -7,7 +7,8 @@
 //   one of the arguments given (or "argument" for an empty one), followed by ':' or ' '.
 // - A command line that parses is consistent: unless --help, at least one object and method and
 //   no repeated one, --jobs in [1, max_command_line_jobs], a shard index below the shard count, a
-//   non-empty --out, and every transfer parameter within its documented range.
+//   non-empty --out, --friction and --hold-fraction in range, and every transfer parameter within
+//   its documented range.
 
 #include <cstdint>
 #include <exception>
@@ -87,6 +88,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                     std::to_string(x.shard_count),
                 input);
     if (cli.out.empty()) fuzz_fail("command_line", "accepted an empty --out", input);
+    const double mu = x.transfer.sim.friction;
+    if (!(mu == 0.0 || (mu > 0.0 && mu <= topograsp::max_command_line_friction)))
+      fuzz_fail("command_line", "accepted --friction " + std::to_string(mu), input);
+    const double hold = x.transfer.sim.close.hold_fraction;
+    if (!(hold > 0.0 && hold <= 1.0))
+      fuzz_fail("command_line", "accepted --hold-fraction " + std::to_string(hold), input);
     try {
       topograsp::validate_transfer_parameters(x.transfer);
     } catch (const topograsp::invalid_argument& e) {

@@ -144,6 +144,24 @@ TEST_CASE("a small experiment: counts, schema and determinism", "[grasp][experim
   }
 }
 
+TEST_CASE("close_human_grasp gives the scene demonstrate judges, or nothing on a miss",
+          "[grasp][demonstrate]") {
+  const GraspObject hammer = objects::hammer();
+  const auto hyps = box_hypotheses(hammer);
+  const HumanGrasp g = demonstrate(hammer, hyps[47], 47);
+  const auto closed = close_human_grasp(hammer, hyps[47]);
+  REQUIRE(closed.has_value());
+  CHECK(closed->closing.q_closed == g.q);
+  CHECK(closed->scene.hand_pose().isApprox(g.hand_pose, 1e-12));
+  CHECK(closed->scene.object_pose().isApprox(g.object_pose, 1e-12));
+  CHECK(closed->scene.hand_contacts() > 0);
+  // The same hypothesis 1 m to the side: the approach passes the hammer by.
+  GraspHypothesis miss = hyps[47];
+  miss.centre += 1.0 * miss.up.cross(miss.approach);
+  CHECK_FALSE(close_human_grasp(hammer, miss).has_value());
+  CHECK_FALSE(demonstrate(hammer, miss, 47).reached);
+}
+
 TEST_CASE("each method on a hand-picked hammer grasp", "[grasp][transfer]") {
   const GraspObject hammer = objects::hammer();
   const auto hyps = box_hypotheses(hammer);

@@ -92,6 +92,19 @@ TEST_CASE("the option --friction sets one coefficient for every pair; the defaul
   CHECK(parse({"--friction", "10"}).experiment.transfer.sim.friction == 10.0);
 }
 
+TEST_CASE("the option --hold-fraction sets the robot hand's hold fraction", "[io][command_line]") {
+  CHECK(parse({}).experiment.transfer.sim.close.hold_fraction == 0.5);
+  CHECK(parse({"--hold-fraction", "0.25"}).experiment.transfer.sim.close.hold_fraction == 0.25);
+  CHECK(parse({"--hold-fraction", "1"}).experiment.transfer.sim.close.hold_fraction == 1.0);
+  CHECK(parse({"--hold-fraction", "0.25"}).experiment.transfer.sim.human_hold_fraction == 1.0);
+  for (const std::string_view f : {"0", "-0.5", "1.01", "nan", "inf", "half"}) {
+    INFO(f);
+    CHECK_THAT(error_of({"--hold-fraction", f}), Catch::StartsWith("--hold-fraction: "));
+  }
+  CHECK_THAT(error_of({"--hold-fraction", "0.5", "--hold-fraction", "0.3"}),
+             Catch::StartsWith("--hold-fraction: given twice"));
+}
+
 TEST_CASE("an option's value is never empty nor another option", "[io][command_line][bad-input]") {
   CHECK_THAT(error_of({"--out", ""}), Catch::StartsWith("--out: expected a value"));
   CHECK_THAT(error_of({"--out", "--jobs", "2"}),
@@ -99,7 +112,7 @@ TEST_CASE("an option's value is never empty nor another option", "[io][command_l
   CHECK_THAT(error_of({"--out"}), Catch::StartsWith("--out: expected a value"));
   for (const std::string_view option :
        {"--objects", "--methods", "--out", "--jobs", "--seed", "--shard", "--max-hypotheses",
-        "--winding-reference", "--set", "--friction", "--judge"}) {
+        "--winding-reference", "--set", "--friction", "--hold-fraction", "--judge"}) {
     INFO(option);
     CHECK_THAT(error_of({option, ""}),
                Catch::StartsWith(std::string(option) + ": expected a value"));
@@ -235,8 +248,8 @@ TEST_CASE("the usage lists every option and every parameter with its range", "[i
   const std::string usage = command_line_usage();
   for (const char* option :
        {"--objects", "--methods", "--out", "--force", "--jobs", "--seed", "--shard",
-        "--max-hypotheses", "--winding-reference", "--set", "--friction", "--judge", "--figures",
-        "--quiet", "--help", "exit status", "results.json"}) {
+        "--max-hypotheses", "--winding-reference", "--set", "--friction", "--hold-fraction",
+        "--judge", "--figures", "--quiet", "--help", "exit status", "results.json"}) {
     INFO(option);
     CHECK(usage.find(option) != std::string::npos);
   }

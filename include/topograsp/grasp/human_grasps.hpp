@@ -175,16 +175,23 @@ template <const auto& M>
   return spec;
 }
 
-/// Runs hypothesis \p h of \p object with the human hand: place the palm (open pre-shape) at the
-/// stand-off, approach until contact, close, then the stability suite on the scene as
-/// closing left it: the grasp is a demonstration only if stable(). Deterministic for given
-/// options. Throws as stability_suite() for bad options.stability.
-[[nodiscard]] inline HumanGrasp demonstrate(const GraspObject& object, const GraspHypothesis& h,
-                                            int id, const GraspSimOptions& options = {}) {
+/// A human grasp as closing left it: the free-base hand where the approach touched the object
+/// (its 6 base coordinates, then the 20 joints of the pre-shape), the scene holding the object
+/// and what closing did.
+struct HumanClosing {
+  Vec<26> touched = Vec<26>::Zero();
+  HandScene<models::human_hand> scene;
+  CloseResult<20> closing;
+};
+
+/// Places the human hand's palm for hypothesis \p h of \p object (open pre-shape, at the
+/// stand-off), approaches until contact and closes with the human hand's holding torques
+/// (options.human_hold_fraction): the grasp demonstrate() judges, for a caller that wants the
+/// scene itself (a benchmark, a figure, another judge). nullopt when the approach does not
+/// reach the object. Throws as close_hand() for bad options.close.
+[[nodiscard]] inline std::optional<HumanClosing> close_human_grasp(
+    const GraspObject& object, const GraspHypothesis& h, const GraspSimOptions& options = {}) {
   constexpr auto& free = models::human_hand_free;
-  HumanGrasp g;
-  g.id = id;
-  g.hypothesis = h;
   const Composite shape = object.composite();
   const Vec<20> pre = human_preshape();
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
@@ -193,27 +200,43 @@ template <const auto& M>
   const Vec<26> start = place_frame<free>(T, free.frame("grasp_centre"), pre);
   const auto touched = approach_until_contact<free>(start, h.approach, shape, options.contact_gap,
                                                     2.0 * options.standoff);
-  if (!touched) return g;
-  g.reached = true;
+  if (!touched) return std::nullopt;
   KinematicsData<free> d;
   forward_kinematics(d, *touched);
-  g.hand_pose = link_pose(d, free.link("palm"));
   HandScene<models::human_hand> scene(
-      g.hand_pose, pre, object_spec(object, HandSurface::human_skin, options.friction),
-      options.scene);
+      link_pose(d, free.link("palm")), pre,
+      object_spec(object, HandSurface::human_skin, options.friction), options.scene);
   CloseOptions close = options.close;
   close.hold_fraction = options.human_hold_fraction;
-  const auto closed = close_hand(scene, close);
-  g.q = closed.q_closed;
-  g.touching_joints = closed.touching_joints;
+  const CloseResult<20> closing = close_hand(scene, close);
+  return HumanClosing{*touched, std::move(scene), closing};
+}
+
+/// Runs hypothesis \p h of \p object with the human hand: place the palm (open pre-shape) at the
+/// stand-off, approach until contact, close (close_human_grasp()), then the stability suite on
+/// the scene as closing left it: the grasp is a demonstration only if stable(). Deterministic
+/// for given options. Throws as stability_suite() for bad options.stability.
+[[nodiscard]] inline HumanGrasp demonstrate(const GraspObject& object, const GraspHypothesis& h,
+                                            int id, const GraspSimOptions& options = {}) {
+  HumanGrasp g;
+  g.id = id;
+  g.hypothesis = h;
+  const std::optional<HumanClosing> closed = close_human_grasp(object, h, options);
+  if (!closed) return g;
+  const HandScene<models::human_hand>& scene = closed->scene;
+  g.reached = true;
+  g.hand_pose = scene.hand_pose();
+  g.q = closed->closing.q_closed;
+  g.touching_joints = closed->closing.touching_joints;
   g.object_pose = scene.object_pose();
   GraspJudgement judged = judge_grasp(scene, object, options, options.second_judge_human);
   g.stability = std::move(judged.stability);
   g.second = std::move(judged.second);
   g.quality = std::move(judged.quality);
   // The windings of the closed hand around the centre of mass.
-  Vec<26> qc = *touched;
+  Vec<26> qc = closed->touched;
   qc.tail<20>() = g.q;
+  KinematicsData<models::human_hand_free> d;
   forward_kinematics(d, qc);
   const Vec3 com = object.centre_of_mass();
   g.windings = WindingTask<models::human_hand_free>(com).value(d);

@@ -150,8 +150,9 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
       continue;
     }
     constexpr std::string_view value_options[] = {
-        "--objects", "--methods",           "--out", "--jobs",     "--seed", "--max-hypotheses",
-        "--shard",   "--winding-reference", "--set", "--friction", "--judge"};
+        "--objects", "--methods",        "--out",           "--jobs",
+        "--seed",    "--max-hypotheses", "--shard",         "--winding-reference",
+        "--set",     "--friction",       "--hold-fraction", "--judge"};
     bool known = false;
     for (const std::string_view o : value_options) known = known || o == arg;
     if (!known)
@@ -211,6 +212,13 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
                      std::to_string(static_cast<int>(max_command_line_friction)) + "], got " +
                      detail::quote_argument(value));
       cli.experiment.transfer.sim.friction = mu;
+    } else if (arg == "--hold-fraction") {
+      const double f = detail::parse_cli_number<double>(value, arg);
+      if (!(f > 0.0 && f <= 1.0))
+        detail::throw_invalid_argument(
+            arg, "expected a fraction of the motors' torque limits in (0, 1], got " +
+                     detail::quote_argument(value));
+      cli.experiment.transfer.sim.close.hold_fraction = f;
     } else if (arg == "--winding-reference") {
       cli.experiment.transfer.winding_reference =
           enum_from_name(value, {WindingReference::centre_of_mass, WindingReference::nearest_point},
@@ -288,6 +296,9 @@ options:
   --friction MU    one Coulomb coefficient for every hand-object pair, in (0, 10], for a friction
                    sensitivity run (default: each pair from the table of materials,
                    docs/objects.md)
+  --hold-fraction F  the fraction of its motors' torque limits with which the robot hand
+                   closes and holds, in (0, 1] (default 0.5); the human hand holds with its
+                   holding torques
   --judge J        which simulator judges the grasps: builtin, mujoco or both (default both
                    when built with MuJoCo, else builtin; mujoco and both need MuJoCo)
   --set NAME=VALUE  set a transfer parameter (repeatable, each name once; the names, defaults
