@@ -26,18 +26,20 @@ namespace {
 
 ContactForQuality contact(const Vec3& p, const Vec3& n, double mu) { return {p, n, mu}; }
 
-// A cube (half side a = 0.05 m) centred at the origin: a contact at point p on the face whose
+// A cube (half side 0.05 m) centred at the origin: a contact at point p on the face whose
 // outward normal is f pushes along -f.
 ContactForQuality on_cube(const Vec3& p, const Vec3& outward, double mu) {
   return contact(p, -outward, mu);
 }
 
-constexpr double a = 0.05;  // the cube's half side (m)
+constexpr double half_side = 0.05;  // the cube's half side (m)
 
 // One contact at the centre of each of the faces +-x and +-y.
 std::vector<ContactForQuality> four_finger_cube(double mu) {
-  return {on_cube({a, 0, 0}, Vec3::UnitX(), mu), on_cube({-a, 0, 0}, -Vec3::UnitX(), mu),
-          on_cube({0, a, 0}, Vec3::UnitY(), mu), on_cube({0, -a, 0}, -Vec3::UnitY(), mu)};
+  return {on_cube({half_side, 0, 0}, Vec3::UnitX(), mu),
+          on_cube({-half_side, 0, 0}, -Vec3::UnitX(), mu),
+          on_cube({0, half_side, 0}, Vec3::UnitY(), mu),
+          on_cube({0, -half_side, 0}, -Vec3::UnitY(), mu)};
 }
 
 Wrenches wrenches_of(const std::vector<ContactForQuality>& c, const Vec3& centre, double scale,
@@ -53,12 +55,13 @@ Wrenches wrenches_of(const std::vector<ContactForQuality>& c, const Vec3& centre
 
 // A thumb on the +x face against two fingers on the -x face.
 std::vector<ContactForQuality> three_finger_cube(double mu) {
-  return {on_cube({a, 0, 0}, Vec3::UnitX(), mu), on_cube({-a, 0.03, 0}, -Vec3::UnitX(), mu),
-          on_cube({-a, -0.03, 0}, -Vec3::UnitX(), mu)};
+  return {on_cube({half_side, 0, 0}, Vec3::UnitX(), mu),
+          on_cube({-half_side, 0.03, 0}, -Vec3::UnitX(), mu),
+          on_cube({-half_side, -0.03, 0}, -Vec3::UnitX(), mu)};
 }
 
 // GraspIt's torque scale for the cube about its centre: its half diagonal.
-const double cube_scale = std::sqrt(3.0) * a;
+const double cube_scale = std::sqrt(3.0) * half_side;
 
 // The support function of the wrench set: h(u) = max_i w_i . u.
 double support(const Wrenches& w, const Vec<6>& u) { return (u.transpose() * w).maxCoeff(); }
@@ -279,13 +282,14 @@ TEST_CASE("Q1: contacts that can only push one way: the signed value is negative
   // Contacts with one normal give wrenches in one hyperplane (unit normal force): flat.
   std::vector<ContactForQuality> c;
   for (const double x : {-0.03, 0.03})
-    for (const double y : {-0.03, 0.03}) c.push_back(on_cube({x, y, a}, Vec3::UnitZ(), 0.5));
+    for (const double y : {-0.03, 0.03})
+      c.push_back(on_cube({x, y, half_side}, Vec3::UnitZ(), 0.5));
   CHECK(ferrari_canny_epsilon(c, Vec3::Zero(), cube_scale).status ==
         GraspQualityStatus::degenerate);
   // Add two on the +x face: the hull is full, but no force has a positive component along
   // (1, 0, 1) (mu 0.5 < 1), so the origin is outside it.
-  c.push_back(on_cube({a, 0.02, 0.01}, Vec3::UnitX(), 0.5));
-  c.push_back(on_cube({a, -0.02, -0.02}, Vec3::UnitX(), 0.5));
+  c.push_back(on_cube({half_side, 0.02, 0.01}, Vec3::UnitX(), 0.5));
+  c.push_back(on_cube({half_side, -0.02, -0.02}, Vec3::UnitX(), 0.5));
   const GraspQuality q = ferrari_canny_epsilon(c, Vec3::Zero(), cube_scale);
   INFO(q.reason);
   REQUIRE(q.status == GraspQualityStatus::not_force_closure);
@@ -332,7 +336,7 @@ TEST_CASE("Q1 by hand: twelve frictionless contacts on a cube give epsilon 1/sqr
   for (int d = 0; d < 3; ++d)
     for (const double s : {-1.0, 1.0}) {
       const Vec3 outward = s * Vec3::Unit(d);
-      six.push_back(on_cube(a * outward, outward, 0.0));
+      six.push_back(on_cube(half_side * outward, outward, 0.0));
     }
   CHECK(ferrari_canny_epsilon(six, Vec3::Zero(), cube_scale).status ==
         GraspQualityStatus::degenerate);
@@ -349,7 +353,8 @@ TEST_CASE("Q1 by hand: twelve frictionless contacts on a cube give epsilon 1/sqr
     for (const double s : {-1.0, 1.0})
       for (const double t : {-1.0, 1.0}) {
         const Vec3 outward = s * Vec3::Unit(d);
-        twelve.push_back(on_cube(a * outward + t * b * Vec3::Unit((d + 2) % 3), outward, 0.0));
+        twelve.push_back(
+            on_cube(half_side * outward + t * b * Vec3::Unit((d + 2) % 3), outward, 0.0));
       }
   const GraspQuality q = ferrari_canny_epsilon(twelve, Vec3::Zero(), b);
   INFO(q.reason);
