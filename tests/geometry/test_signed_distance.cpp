@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <random>
+#include <utility>
 
 #include <catch2/catch.hpp>
 
@@ -257,20 +258,57 @@ TEST_CASE("signed_distance of boxes with coinciding centres and faces is their o
   CHECK(signed_distance(a, e).distance == Approx(-0.002).margin(1e-6));
 }
 
+namespace {
+
+// The pairs fuzz_narrow_phase found: a bar of half extents \p size at \p p turned by \p R, and
+// a 2 mm cube at (-3, -3, -3) with its axes permuted (to 1e-12).
+std::pair<Primitive, Primitive> bar_and_cube(const Vec3& size, const Vec3& p, const Mat3& R) {
+  Primitive bar, cube;
+  bar.type = cube.type = ShapeType::box;
+  bar.size = size;
+  bar.p = p;
+  bar.R = R;
+  cube.size = Vec3(0.001, 0.001, 0.001);
+  cube.p = Vec3(-3, -3, -3);
+  const double e1 = -6.8967054289714724e-13, e2 = 6.8961503174591599e-13;
+  cube.R << e1, e2, 1, 1, e1, e2, e2, 1, e1;
+  return {bar, cube};
+}
+
+}  // namespace
+
 TEST_CASE("a flat GJK simplex through the origin still gives the overlap's depth",
           "[geometry][signed_distance]") {
   // Found by fuzz_narrow_phase (fuzz/regressions/narrow_phase/epa_flat_simplex_zero_depth): a
   // 2 mm cube inside a 2 mm x 2 mm x 3 m bar, same centre, axes permuted; GJK ended on a triangle
   // along the bar's diagonal, EPA's tetrahedron missed the origin, and the distance was 0.
-  Primitive a, b;
-  a.type = b.type = ShapeType::box;
-  a.size = Vec3(0.001, 0.0010000000004173116, 1.5218078431372548);
-  a.p = Vec3(-3, -2.9999999999562803, -3);
-  a.R << 0, 0, 1, 1, 0, 0, 0, 1, 0;
-  b.size = Vec3(0.001, 0.001, 0.001);
-  b.p = Vec3(-3, -3, -3);
-  const double e1 = -6.8967054289714724e-13, e2 = 6.8961503174591599e-13;
-  b.R << e1, e2, 1, 1, e1, e2, e2, 1, e1;
+  Mat3 R;
+  R << 0, 0, 1, 1, 0, 0, 0, 1, 0;
+  const auto [a, b] = bar_and_cube(Vec3(0.001, 0.0010000000004173116, 1.5218078431372548),
+                                   Vec3(-3, -2.9999999999562803, -3), R);
   CHECK(signed_distance(a, b).distance == Approx(-0.002).margin(1e-9));
   CHECK(signed_distance(b, a).distance == Approx(-0.002).margin(1e-9));
+}
+
+TEST_CASE("two overlapping boxes are as deep as their least overlap over the 15 axes",
+          "[geometry][signed_distance]") {
+  // Found by fuzz_narrow_phase (fuzz/regressions/narrow_phase/epa_short_box_depth): a 2 mm cube
+  // across a 2 mm x 2 mm x 3 m bar, turned; EPA stopped at 1.85 mm, short of the depth, 2.393 mm
+  // along the cross product of the two boxes' third axes (computed apart from the library, from
+  // the 15 axes' overlaps).
+  Mat3 R;
+  R << -0.22175199524464206, -0.93063141796337345, 0.29112062191555726, 0.29112057727957635,
+      0.22175205384198138, 0.93063141796377646, -0.93063143192642395, 0.29112057728086432,
+      0.22175199524295142;
+  const auto [a, b] =
+      bar_and_cube(Vec3(0.001, 0.001, 1.5218078431372548), Vec3(-3, -2.9999306201893297, -3), R);
+  const Contact ab = signed_distance(a, b), ba = signed_distance(b, a);
+  CHECK(ab.distance == Approx(-0.002393032680916147).margin(1e-9));
+  CHECK(ba.distance == Approx(-0.002393032680916147).margin(1e-9));
+  CHECK(ab.normal.dot(ba.normal) == Approx(-1.0).margin(1e-9));
+  // Moving B out along the normal by the depth and 0.1 mm more leaves them 0.1 mm apart.
+  Primitive moved = b;
+  moved.p += (0.002393032680916147 + 1e-4) * ab.normal;
+  CHECK(signed_distance(a, moved).distance == Approx(1e-4).margin(1e-9));
+  CHECK((ab.point_b - ab.point_a - ab.distance * ab.normal).norm() < 1e-10);
 }
