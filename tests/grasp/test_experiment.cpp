@@ -171,11 +171,7 @@ TEST_CASE("each method on a hand-picked hammer grasp", "[grasp][transfer]") {
   REQUIRE(g.stable());
   CHECK(g.descriptor.values[0] >= g.descriptor.values[1]);
   CHECK(g.descriptor.values[0] > 0.5);  // the hand wraps the handle
-  // Closing by a squeeze of 10 degrees past contact into 8000 N/m pads leaves the SDH 1.0 to
-  // 1.6 cm inside the hammer (the motor closing of issue 13 replaces it); this test is about the
-  // methods, so their grasps are judged on the object's motion alone.
-  TransferOptions options;
-  options.sim.stability.max_penetration = 0.02;
+  const TransferOptions options;
   const RobotGrasp topo = transfer_topological(hammer, g, options);
   CHECK(topo.planned);
   CHECK(topo.stable());
@@ -212,7 +208,6 @@ TEST_CASE("the line task keeps the SDH on the part the human held", "[grasp][tra
     return (off - off.dot(human.linear().col(2)) * human.linear().col(2)).norm();
   };
   TransferOptions options;
-  options.sim.stability.max_penetration = 0.02;  // judged on motion alone, as above
   const RobotGrasp on_line = transfer_topological(hammer, g, options);
   options.line_precision_mid = options.line_precision_end = 0.0;
   const RobotGrasp free = transfer_topological(hammer, g, options);
