@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <random>
 #include <utility>
 
@@ -311,4 +314,42 @@ TEST_CASE("two overlapping boxes are as deep as their least overlap over the 15 
   moved.p += (0.002393032680916147 + 1e-4) * ab.normal;
   CHECK(signed_distance(a, moved).distance == Approx(1e-4).margin(1e-9));
   CHECK((ab.point_b - ab.point_a - ab.distance * ab.normal).norm() < 1e-10);
+}
+
+TEST_CASE("a capsule whose core is inside a box is as deep as the core's way out plus its radius",
+          "[geometry][signed_distance]") {
+  // Found by fuzz_narrow_phase (fuzz/regressions/narrow_phase/epa_capsule_core_inside_box): a
+  // capsule of zero length (radius 1 mm) at the centre of a 2.06 x 2.01 mm x 3 m bar; GJK ended
+  // on a flat simplex, EPA found no answer and the depth read 0 (distance -1 mm, the radius).
+  // Its core leaves the bar across the nearer long face: 1.007 mm, plus the radius.
+  Primitive bar;
+  bar.type = ShapeType::box;
+  bar.size = Vec3(0.0010305023193430394, 0.00100700132893581, 1.5218078431372548);
+  bar.p = Vec3(-2.9999999985157046, -3, -3);
+  bar.R << 0, 0, 1, 1, 0, 0, 0, 1, 0;
+  const Primitive point = Primitive::capsule(Vec3(-3, -3, -3), Vec3(-3, -3, -3), 0.001);
+  const double depth = 0.00100700132893581 + 0.001;
+  const Contact ab = signed_distance(bar, point), ba = signed_distance(point, bar);
+  CHECK(ab.distance == Approx(-depth).margin(1e-9));
+  CHECK(ba.distance == Approx(-depth).margin(1e-9));
+  // The bar's second axis is the world's z: the way out is along +-z.
+  CHECK(std::abs(ab.normal.z()) == Approx(1.0).margin(1e-9));
+
+  // A 10 mm segment across the bar, tilted 30 degrees from the bar's short side in the bar's
+  // x-y plane: its core leaves along the bar's first axis by the larger end's reach, and the
+  // answer is the same as the least over the box's three axes and the segment's crossings.
+  const double half = 0.005, tilt = std::numbers::pi / 6.0;
+  const Vec3 along = std::cos(tilt) * bar.R.col(0) + std::sin(tilt) * bar.R.col(1);
+  const Primitive rod =
+      Primitive::capsule(Vec3(bar.p - half * along), Vec3(bar.p + half * along), 0.0005);
+  // Along the bar's first axis the segment reaches half*cos(tilt) beyond the centre; the
+  // Minkowski difference's extent there is a0 + half*cos(tilt); along the second axis
+  // a1 + half*sin(tilt); along the third axis a2 (the segment is flat in it). Along the normal of
+  // the face swept by the bar's third edge and the segment (in the bar's x-y plane, across the
+  // segment), the segment has no extent and the bar reaches a0*sin + a1*cos.
+  const double a0 = bar.size[0], a1 = bar.size[1], a2 = bar.size[2];
+  const double expected = std::min({a0 + half * std::cos(tilt), a1 + half * std::sin(tilt), a2,
+                                    a0 * std::sin(tilt) + a1 * std::cos(tilt)});
+  CHECK(signed_distance(bar, rod).distance == Approx(-expected - 0.0005).margin(1e-9));
+  CHECK(signed_distance(rod, bar).distance == Approx(-expected - 0.0005).margin(1e-9));
 }

@@ -46,15 +46,14 @@ namespace detail {
 ///   Two capsules whose axes cross get the normal along the cross product of the axes.
 /// - sphere with box or cylinder: closed-form signed distance of the centre to the solid; exact,
 ///   including the penetration depth.
-/// - box with box: GJK when they are apart; when they overlap, the least extent of their
-///   Minkowski difference over the 15 separating axes (face normals, edge cross products). Exact.
-/// - capsule with box or cylinder, box with cylinder, cylinder with cylinder: GJK on the cores
-///   when they are apart, EPA when they overlap. Exact (to rounding) when both cores are
-///   polytopes (capsule-box), where both algorithms terminate. With a
-///   cylinder involved the curved rim is approached iteratively: apart, the distance is exact to
-///   about 1e-12 m relative; overlapping, EPA (at most 128 vertices) gives the depth to about
-///   1e-7 m and the witness points to about 1e-5 m, so the distance gradient built from them is
-///   accurate to about 1e-4 relative there.
+/// - box with box or capsule: GJK on the cores when they are apart; when they overlap, the least
+///   extent of their Minkowski difference over its face normals (the boxes' face normals, the
+///   cross products of the cores' edge directions). Exact.
+/// - capsule with cylinder, box with cylinder, cylinder with cylinder: GJK on the cores when they
+///   are apart, EPA when they overlap. With a cylinder involved the curved rim is approached
+///   iteratively: apart, the distance is exact to about 1e-12 m relative; overlapping, EPA (at most
+///   128 vertices) gives the depth to about 1e-7 m and the witness points to about 1e-5 m, so the
+///   distance gradient built from them is accurate to about 1e-4 relative there.
 /// If EPA meets a degenerate polytope (cores touching along a face at the level of rounding) the
 /// answer is the touching contact (cores at distance 0) between the centres; never NaN.
 [[nodiscard]] inline Contact signed_distance(const Primitive& a, const Primitive& b) noexcept {
@@ -96,13 +95,16 @@ namespace detail {
   }
   double depth = 0.0;
   Vec3 n, pa, pb;
-  // Two boxes: the depth is the least extent of the Minkowski difference over the 15 separating
-  // axes (their face normals and the cross products of their edges), which is exact. EPA is not
-  // used for them: it can stop short of the depth (fuzz_narrow_phase: a 1 mm cube across a 1 mm
-  // bar, 1.85 mm deep by EPA, 2.39 mm by the axes) and a flat final GJK simplex (a long thin
-  // Minkowski difference with the origin on a diagonal) can blow up to a tetrahedron that just
-  // misses the origin.
-  if (a.type == ShapeType::box && b.type == ShapeType::box) {
+  // Two polytope cores (box with box, box with a capsule's segment or a sphere's point): the
+  // depth is the least extent of the Minkowski difference over its face normals - the boxes' face
+  // normals and the cross products of their edge directions with the other core's (a box's three
+  // axes, a segment's one) - which is exact. EPA is not used for them: it can stop short of the
+  // depth (fuzz_narrow_phase: a 1 mm cube across a 1 mm bar, 1.85 mm deep by EPA, 2.39 mm by the
+  // axes), and a long thin Minkowski difference (a point inside a 2 mm x 3 m bar) gives GJK a
+  // flat final simplex from which EPA finds no answer at all.
+  const bool core_a_polytope = a.type == ShapeType::box || a.type == ShapeType::capsule;
+  const bool core_b_polytope = b.type == ShapeType::box || b.type == ShapeType::capsule;
+  if (core_a_polytope && core_b_polytope) {
     double best = std::numeric_limits<double>::infinity();
     const auto consider = [&](const Vec3& axis) {
       const double len = axis.norm();
@@ -119,13 +121,19 @@ namespace detail {
         }
       }
     };
+    // A core's edge directions: a box's three axes, a capsule segment's axis (its third).
+    const auto edges = [](const Primitive& s) { return s.type == ShapeType::box ? 3 : 1; };
+    const auto edge = [](const Primitive& s, int i) -> Vec3 {
+      return s.type == ShapeType::box ? Vec3(s.R.col(i)) : Vec3(s.R.col(2));
+    };
     for (int i = 0; i < 3; ++i) {
-      consider(a.R.col(i));
-      consider(b.R.col(i));
-      for (int j = 0; j < 3; ++j) consider(a.R.col(i).cross(b.R.col(j)));
+      if (a.type == ShapeType::box) consider(a.R.col(i));
+      if (b.type == ShapeType::box) consider(b.R.col(i));
     }
+    for (int i = 0; i < edges(a); ++i)
+      for (int j = 0; j < edges(b); ++j) consider(edge(a, i).cross(edge(b, j)));
     if (std::isfinite(best) && best >= 0.0) {
-      // The witness points: where the boxes touch once B is moved out along n by the depth
+      // The witness points: where the cores touch once B is moved out along n by the depth
       // (and a hair more, so that GJK sees them apart), moved back.
       const double out = best + 1e-6 * (1.0 + best);
       Primitive moved = b;
