@@ -4,6 +4,7 @@
 // the paper's Table I beside its own; writes DIR/results.json and DIR/scenes/*.xml (MJCF), and
 // with --figures DIR/figures/*.svg and DIR/index.html, through a staging folder committed at the
 // end (io/output_folder.hpp). The command line is parse_command_line (io/command_line.hpp).
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <csignal>
@@ -14,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include <topograsp/evaluation/statistics.hpp>
 #include <topograsp/grasp/experiment.hpp>
 #include <topograsp/io/command_line.hpp>
 #include <topograsp/io/output_folder.hpp>
@@ -27,20 +29,25 @@ namespace {
 
 using namespace topograsp;
 
-std::string percent(const MethodSummary* m) {
-  if (m == nullptr || m->tested == 0) return "-";
-  char buf[16];
-  std::snprintf(buf, sizeof buf, "%.0f%%", 100.0 * m->rate());
+// "62% [36, 82]": a rate with its 95 % Wilson interval, in percent.
+std::string percent(int stable, int tested) {
+  if (tested == 0) return "-";
+  const RateInterval i = wilson_interval(stable, tested);
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.0f%% [%.0f, %.0f]", 100.0 * stable / tested, 100.0 * i.lower,
+                100.0 * i.upper);
   return buf;
 }
 
-// The paper's Table I next to ours, one column per object.
+// The stable count of method m on r by the deciding engine or the second judge.
+int stable_count(const ObjectResult& r, std::size_t m, bool second) {
+  const std::vector<bool> v = method_outcomes(r, m, second);
+  return static_cast<int>(std::count(v.begin(), v.end(), true));
+}
+
+// The paper's Table I next to ours, one column per object; with a second judge its rates too;
+// then each method against the topological one on the same grasps (McNemar's exact test).
 void print_table(const ExperimentOptions& experiment, const std::vector<ObjectResult>& results) {
-  const auto find = [&](const ObjectResult& r, TransferMethod m) -> const MethodSummary* {
-    for (const MethodSummary& s : r.methods)
-      if (s.method == m) return &s;
-    return nullptr;
-  };
   const auto paper = [](const std::string& object, int row) -> std::string {
     // Table I of the paper: hammer, bottle; rows: grasps, stable, autoclose, topological.
     if (object == "hammer")
@@ -49,29 +56,74 @@ void print_table(const ExperimentOptions& experiment, const std::vector<ObjectRe
       return std::array<const char*, 4>{"151", "32", "25%", "63%"}[static_cast<std::size_t>(row)];
     return "-";
   };
-  std::printf("\n%-40s", "TABLE I (paper | topograsp)");
-  for (const ObjectResult& r : results) std::printf(" %20s", r.object.name.c_str());
-  std::printf("\n");
-  const auto row = [&](const char* label, int paper_row, const auto& ours) {
-    std::printf("%-40s", label);
-    for (const ObjectResult& r : results) {
-      const std::string cell =
-          (paper_row >= 0 ? paper(r.object.name, paper_row) : "-") + " | " + ours(r);
-      std::printf(" %20s", cell.c_str());
-    }
+  const auto label = [](TransferMethod m) {
+    return m == TransferMethod::transplant    ? "Autoclose (transplant)"
+           : m == TransferMethod::topological ? "Topological synergies"
+                                              : "Fingertip mapping";
+  };
+  const auto header = [&](const char* title) {
+    std::printf("\n%-34s", title);
+    for (const ObjectResult& r : results) std::printf(" %26s", r.object.name.c_str());
     std::printf("\n");
   };
-  row("Total number of grasps", 0,
-      [](const ObjectResult& r) { return std::to_string(r.hypotheses); });
-  row("Stable grasps", 1, [](const ObjectResult& r) { return std::to_string(r.stable_human()); });
-  for (const TransferMethod m : experiment.methods) {
-    const int paper_row = m == TransferMethod::transplant    ? 2
-                          : m == TransferMethod::topological ? 3
-                                                             : -1;
-    const char* label = m == TransferMethod::transplant    ? "Autoclose (transplant)"
-                        : m == TransferMethod::topological ? "Topological synergies"
-                                                           : "Fingertip mapping";
-    row(label, paper_row, [&](const ObjectResult& r) { return percent(find(r, m)); });
+  const auto row = [&](const std::string& text, const auto& cell) {
+    std::printf("%-34s", text.c_str());
+    for (const ObjectResult& r : results) std::printf(" %26s", cell(r).c_str());
+    std::printf("\n");
+  };
+  const bool second = experiment.judge != Judge::builtin;
+  const std::string first_name(second && experiment.judge == Judge::mujoco ? "MuJoCo" : "built-in");
+  header(("TABLE I (paper | " + first_name + ", 95% CI)").c_str());
+  row("Total number of grasps", [&](const ObjectResult& r) {
+    return paper(r.object.name, 0) + " | " + std::to_string(r.hypotheses);
+  });
+  row("Stable grasps", [&](const ObjectResult& r) {
+    return paper(r.object.name, 1) + " | " + std::to_string(r.stable_human());
+  });
+  for (std::size_t m = 0; m < experiment.methods.size(); ++m) {
+    const TransferMethod method = experiment.methods[m];
+    const int paper_row = method == TransferMethod::transplant    ? 2
+                          : method == TransferMethod::topological ? 3
+                                                                  : -1;
+    row(label(method), [&](const ObjectResult& r) {
+      return (paper_row >= 0 ? paper(r.object.name, paper_row) : "-") + " | " +
+             percent(stable_count(r, m, false), r.methods[m].tested);
+    });
+  }
+  if (second) {
+    const std::string second_name(experiment.judge == Judge::mujoco ? "built-in" : "MuJoCo");
+    header(("The same grasps judged by " + second_name + " (95% CI)").c_str());
+    row("Stable grasps", [&](const ObjectResult& r) {
+      int n = 0;
+      for (const HumanGrasp& g : r.human) n += g.second && g.second->stable ? 1 : 0;
+      return std::to_string(n);
+    });
+    for (std::size_t m = 0; m < experiment.methods.size(); ++m)
+      row(label(experiment.methods[m]), [&](const ObjectResult& r) {
+        return percent(stable_count(r, m, true), r.methods[m].tested);
+      });
+  }
+  const auto topological =
+      std::find(experiment.methods.begin(), experiment.methods.end(), TransferMethod::topological);
+  if (topological == experiment.methods.end() || experiment.methods.size() < 2) return;
+  const std::size_t t = static_cast<std::size_t>(topological - experiment.methods.begin());
+  header("Against topological, same grasps:");
+  std::printf("(held by this method only | by topological only, McNemar's exact p)\n");
+  for (std::size_t m = 0; m < experiment.methods.size(); ++m) {
+    if (m == t) continue;
+    for (const bool by_second : {false, true}) {
+      if (by_second && !second) continue;
+      const std::string engine =
+          !second ? ""
+                  : (by_second == (experiment.judge == Judge::mujoco) ? ", built-in" : ", MuJoCo");
+      row(label(experiment.methods[m]) + engine, [&](const ObjectResult& r) {
+        const PairedComparison c =
+            compare_paired(method_outcomes(r, m, by_second), method_outcomes(r, t, by_second));
+        char buf[48];
+        std::snprintf(buf, sizeof buf, "%d | %d, p = %.2g", c.only_first, c.only_second, c.p_value);
+        return std::string(buf);
+      });
+    }
   }
 }
 

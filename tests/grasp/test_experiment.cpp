@@ -56,7 +56,11 @@ TEST_CASE("a small experiment: counts, schema and determinism", "[grasp][experim
       CHECK(r.methods[m].tested == stable);
       CHECK(r.methods[m].stable <= r.methods[m].tested);
       CHECK(r.transfers[m].size() == static_cast<std::size_t>(stable));
+      const std::vector<bool> v = method_outcomes(r, m, false);
+      CHECK(std::count(v.begin(), v.end(), true) == r.methods[m].stable);
+      CHECK(method_outcomes(r, m, true) == std::vector<bool>(v.size(), false));  // no 2nd judge
     }
+    CHECK_THROWS_WITH(method_outcomes(r, 3, false), Catch::Contains("method index below 3"));
   }
 
   SECTION("results.json follows the documented schema") {
@@ -90,12 +94,43 @@ TEST_CASE("a small experiment: counts, schema and determinism", "[grasp][experim
         }
         const Json& ratio = s.at("median_force_ratio_stable");
         CHECK((ratio.is_null() ? s.at("stable").as_number() == 0.0 : ratio.as_number() > 0.0));
+        // The rate's 95 % Wilson interval holds the rate.
+        const auto& interval = s.at("interval").as_array();
+        REQUIRE(interval.size() == 2);
+        CHECK(interval[0].as_number() <= rate);
+        CHECK(interval[1].as_number() >= rate);
+        CHECK(interval[0].as_number() >= 0.0);
+        CHECK(interval[1].as_number() <= 1.0);
+      }
+      // Each method against the topological one on the same grasps: the four kinds of pair add
+      // up to the grasps tested, and the counts give the rates; no second judge here.
+      CHECK(o.at("methods").at("topological").at("paired").is_null());
+      const double topological_stable = o.at("methods").at("topological").at("stable").as_number();
+      for (const char* m : {"transplant", "fingertip"}) {
+        const Json& s = o.at("methods").at(m);
+        const Json& p = s.at("paired");
+        CHECK(p.at("against").as_string() == "topological");
+        const double both = p.at("both").as_number(), only_this = p.at("only_this").as_number(),
+                     only_against = p.at("only_against").as_number();
+        CHECK(both + only_this + only_against + p.at("neither").as_number() ==
+              s.at("tested").as_number());
+        CHECK(both + only_this == s.at("stable").as_number());
+        CHECK(both + only_against == topological_stable);
+        CHECK(p.at("p_value").as_number() ==
+              Approx(mcnemar_exact_p(static_cast<int>(only_this), static_cast<int>(only_against))));
+        CHECK(s.at("paired_second").is_null());
       }
       for (const HumanGrasp& g : results[i].human) expected_grasps += g.reached ? 1 : 0;
       expected_grasps += 3 * static_cast<std::size_t>(results[i].stable_human());
     }
     const auto& grasps = doc.at("grasps").as_array();
     CHECK(grasps.size() == expected_grasps);
+    // Paired: the demonstration and every method's transfer of it meet the same shakes.
+    for (const Json& g : grasps) {
+      const std::string seed = g.at("shake_seed").as_string();
+      CHECK(seed == std::to_string(grasp_seed(config.seed, g.at("object").as_string(),
+                                              static_cast<int>(g.at("id").as_number()))));
+    }
     for (const Json& g : grasps) {
       CHECK(g.at("object").is_string());
       CHECK(is_integer(g.at("id")));

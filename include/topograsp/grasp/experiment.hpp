@@ -79,6 +79,24 @@ struct ObjectResult {
   }
 };
 
+/// The verdicts of method \p m (an index into \p r.methods) on each stable human grasp of \p r,
+/// in the order of r.transferred_ids: by the engine that decides (\p second_judge false) or by
+/// the second judge (true). A transfer that was not planned fails in both; a planned one without
+/// a second verdict (no second judge in the run) fails in the second. Every method's vector has
+/// the same grasps in the same order, so two of them are paired (compare_paired).
+/// \throws topograsp::invalid_argument for m out of range.
+[[nodiscard]] inline std::vector<bool> method_outcomes(const ObjectResult& r, std::size_t m,
+                                                       bool second_judge) {
+  if (m >= r.transfers.size())
+    detail::throw_invalid_argument(
+        "m", "expected a method index below " + std::to_string(r.transfers.size()));
+  std::vector<bool> out;
+  out.reserve(r.transfers[m].size());
+  for (const RobotGrasp& t : r.transfers[m])
+    out.push_back(second_judge ? t.planned && t.second && t.second->stable : t.stable());
+  return out;
+}
+
 /// The 64-bit FNV-1a hash of \p text.
 [[nodiscard]] constexpr std::uint64_t fnv1a_64(std::string_view text) noexcept {
   std::uint64_t h = 0xcbf29ce484222325ull;
@@ -89,16 +107,16 @@ struct ObjectResult {
   return h;
 }
 
-/// The seed of the stability suite of grasp \p id of the object called \p object by method \p
-/// method
-/// (-1 for the demonstration): the object's name hashed (FNV-1a), then a SplitMix64 mix. A grasp's
-/// random stream depends only on what it is, never on the order, the threads, the other objects
-/// of the run or the shard, so any split of a run reproduces the whole.
+/// The seed of the stability suite of grasp \p id of the object called \p object: the object's
+/// name hashed (FNV-1a), then a SplitMix64 mix. The human demonstration and every method's transfer
+/// of it share the seed, so every method meets the same shake, the same six directions and the
+/// same hard shake on the same human grasp (a paired comparison, McNemar's test). A grasp's random
+/// stream depends only on what it is, never on the order, the threads, the other objects of the
+/// run or the shard, so any split of a run reproduces the whole.
 [[nodiscard]] constexpr std::uint64_t grasp_seed(std::uint64_t seed, std::string_view object,
-                                                 int id, int method) noexcept {
+                                                 int id) noexcept {
   return detail::splitmix64_mix(seed ^ detail::splitmix64_mix(fnv1a_64(object)) ^
-                                (0xbf58476d1ce4e5b9ull * static_cast<std::uint64_t>(id + 1)) ^
-                                (0x94d049bb133111ebull * static_cast<std::uint64_t>(method + 2)));
+                                (0xbf58476d1ce4e5b9ull * static_cast<std::uint64_t>(id + 1)));
 }
 
 namespace detail {
@@ -261,7 +279,7 @@ std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& o
     run_parallel(static_cast<int>(ids.size()), [&](int k) {
       GraspSimOptions sim = options.transfer.sim;
       const int id = ids[static_cast<std::size_t>(k)];
-      sim.stability.seed = grasp_seed(options.seed, res.object.name, id, -1);
+      sim.stability.seed = grasp_seed(options.seed, res.object.name, id);
       res.human[static_cast<std::size_t>(k)] =
           demonstrate(res.object, hyps[static_cast<std::size_t>(id)], id, sim);
       say("[" + res.object.name + "] human demonstrations " + std::to_string(++done) + "/" +
@@ -281,8 +299,7 @@ std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& o
       const std::size_t s = static_cast<std::size_t>(k) % std::max<std::size_t>(stable.size(), 1);
       TransferOptions transfer_options = options.transfer;
       const HumanGrasp& g = *stable[s];
-      transfer_options.sim.stability.seed =
-          grasp_seed(options.seed, res.object.name, g.id, static_cast<int>(options.methods[m]));
+      transfer_options.sim.stability.seed = grasp_seed(options.seed, res.object.name, g.id);
       res.transfers[m][s] = transfer(options.methods[m], res.object, g, transfer_options);
       say("[" + res.object.name + "] transfers " + std::to_string(++done) + "/" +
           std::to_string(total));

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include <topograsp/evaluation/statistics.hpp>
 #include <topograsp/grasp/experiment.hpp>
 #include <topograsp/io/file_name.hpp>
 #include <topograsp/io/json.hpp>
@@ -125,9 +126,21 @@ inline Verdicts verdicts_of(const StabilityResult& first, const StabilityResult&
           std::max(first.collider_error, second.collider_error) <= k_collider_tolerance};
 }
 
-// Each engine's stable count over the grasps with both verdicts, and how often they agree: over
-// all of them, and over those whose colliders were exact at the start.
-inline Json agreement_summary(const std::vector<Verdicts>& verdicts, std::string_view second_name) {
+// A rate's 95 % Wilson interval as [lower, upper].
+inline Json json_interval(int successes, int trials) {
+  const RateInterval i = wilson_interval(successes, trials);
+  Json::Array a;
+  a.emplace_back(i.lower);
+  a.emplace_back(i.upper);
+  return Json(std::move(a));
+}
+
+// Each engine's stable count over the grasps with both verdicts, the second engine's rate over
+// the \p tested grasps (those judged by neither count as failing) with its Wilson interval, and
+// how often the engines agree: over all judged grasps, and over those whose colliders were exact
+// at the start.
+inline Json agreement_summary(const std::vector<Verdicts>& verdicts, int tested,
+                              std::string_view second_name) {
   if (verdicts.empty()) return Json();
   int first = 0, second = 0, agree = 0, exact = 0, agree_exact = 0;
   for (const Verdicts& v : verdicts) {
@@ -143,7 +156,8 @@ inline Json agreement_summary(const std::vector<Verdicts>& verdicts, std::string
   s.set("judged", static_cast<int>(verdicts.size()));
   s.set("stable_first", first);
   s.set("stable_second", second);
-  s.set("rate_second", second / n);
+  s.set("rate_second", tested > 0 ? second / static_cast<double>(tested) : 0.0);
+  s.set("interval_second", json_interval(second, tested));
   s.set("agreement", agree / n);
   s.set("judged_exact", exact);
   s.set("agreement_exact", exact > 0 ? Json(agree_exact / static_cast<double>(exact)) : Json());
@@ -178,6 +192,7 @@ inline Json stability_summary(const std::vector<const StabilityResult*>& grasps)
   s.set("tested", n);
   s.set("stable", stable);
   s.set("rate", rate(stable));
+  s.set("interval", json_interval(stable, n));
   Json tests = Json::object();
   for (std::size_t i = 0; i < k_stability_tests; ++i)
     tests.set(std::string(to_string(static_cast<StabilityTest>(i))), rate(passed[i]));
@@ -270,9 +285,17 @@ inline void check_scene_names(const ExperimentOptions& options) {
         if (g.second) verdicts.push_back(detail::verdicts_of(g.stability, *g.second));
       }
     Json human = detail::stability_summary(set);
-    human.set("second_judge", detail::agreement_summary(verdicts, second_name));
+    human.set("second_judge",
+              detail::agreement_summary(verdicts, static_cast<int>(set.size()), second_name));
     o.set("human", human);
     Json ms = Json::object();
+    const auto topological = std::find_if(
+        r.methods.begin(), r.methods.end(),
+        [](const MethodSummary& m) { return m.method == TransferMethod::topological; });
+    const bool with_second =
+        std::any_of(r.transfers.begin(), r.transfers.end(), [](const std::vector<RobotGrasp>& ts) {
+          return std::any_of(ts.begin(), ts.end(), [](const RobotGrasp& t) { return t.second; });
+        });
     for (std::size_t m = 0; m < r.methods.size(); ++m) {
       set.clear();
       verdicts.clear();
@@ -284,7 +307,27 @@ inline void check_scene_names(const ExperimentOptions& options) {
       s.set("tested", r.methods[m].tested);
       s.set("stable", r.methods[m].stable);
       s.set("rate", r.methods[m].rate());
-      s.set("second_judge", detail::agreement_summary(verdicts, second_name));
+      s.set("interval", detail::json_interval(r.methods[m].stable, r.methods[m].tested));
+      s.set("second_judge", detail::agreement_summary(verdicts, r.methods[m].tested, second_name));
+      // Against the topological method on the same grasps (same shakes): McNemar's exact test.
+      const auto paired = [&](bool second_judge) -> Json {
+        if (topological == r.methods.end() || r.methods[m].method == TransferMethod::topological ||
+            (second_judge && !with_second))
+          return Json();
+        const std::size_t t = static_cast<std::size_t>(topological - r.methods.begin());
+        const PairedComparison c = compare_paired(method_outcomes(r, m, second_judge),
+                                                  method_outcomes(r, t, second_judge));
+        Json j = Json::object();
+        j.set("against", "topological");
+        j.set("both", c.both);
+        j.set("only_this", c.only_first);
+        j.set("only_against", c.only_second);
+        j.set("neither", c.neither);
+        j.set("p_value", c.p_value);
+        return j;
+      };
+      s.set("paired", paired(false));
+      s.set("paired_second", paired(true));
       ms.set(to_string(r.methods[m].method), s);
     }
     o.set("methods", ms);
@@ -295,6 +338,7 @@ inline void check_scene_names(const ExperimentOptions& options) {
       rec.set("object", r.object.name);
       rec.set("id", g.id);
       rec.set("method", "human");
+      rec.set("shake_seed", std::to_string(grasp_seed(options.seed, r.object.name, g.id)));
       rec.set("stable", g.stable());
       rec.set("scene", scene_path(r.object.name, g.id, "human"));
       rec.set("winding_human", detail::json_vector(g.windings));
@@ -316,6 +360,7 @@ inline void check_scene_names(const ExperimentOptions& options) {
         rec.set("object", r.object.name);
         rec.set("id", id);
         rec.set("method", to_string(r.methods[m].method));
+        rec.set("shake_seed", std::to_string(grasp_seed(options.seed, r.object.name, id)));
         rec.set("stable", t.stable());
         rec.set("scene",
                 t.planned ? Json(scene_path(r.object.name, id, to_string(t.method))) : Json());

@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The Wilson interval against Newcombe's published examples, McNemar's exact test against exact
+// binomial sums, and what both do with bad input.
+#include <limits>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include <topograsp/evaluation/statistics.hpp>
+
+using namespace topograsp;
+
+TEST_CASE("the Wilson interval matches Newcombe's worked examples", "[evaluation][statistics]") {
+  // R. G. Newcombe, Two-sided confidence intervals for the single proportion: comparison of seven
+  // methods, Statistics in Medicine 17 (1998) 857-872, Table I, method 3 (score, no correction).
+  struct Case {
+    int successes, trials;
+    double lower, upper;
+  };
+  for (const Case c : {Case{81, 263, 0.2553, 0.3662}, Case{15, 148, 0.0624, 0.1605},
+                       Case{0, 20, 0.0, 0.1611}, Case{1, 29, 0.0061, 0.1718}}) {
+    const RateInterval i = wilson_interval(c.successes, c.trials);
+    CHECK(i.lower == Approx(c.lower).margin(5e-5));
+    CHECK(i.upper == Approx(c.upper).margin(5e-5));
+  }
+}
+
+TEST_CASE("the Wilson interval is symmetric, inside [0, 1], and exact at the ends",
+          "[evaluation][statistics]") {
+  const RateInterval half = wilson_interval(5, 10);
+  CHECK(half.lower == Approx(0.236593090512564).margin(1e-12));
+  CHECK(half.upper == Approx(1.0 - 0.236593090512564).margin(1e-12));
+  const RateInterval all = wilson_interval(13, 13), none = wilson_interval(0, 13);
+  CHECK(all.upper == 1.0);
+  CHECK(none.lower == 0.0);
+  CHECK(all.lower == Approx(1.0 - none.upper).margin(1e-12));
+  CHECK(all.lower == Approx(0.7719046276458016).margin(1e-12));
+  // A wider quantile gives a wider interval; no trials, nothing known.
+  const RateInterval wide = wilson_interval(5, 10, 2.576);
+  CHECK(wide.lower < half.lower);
+  CHECK(wide.upper > half.upper);
+  const RateInterval unknown = wilson_interval(0, 0);
+  CHECK(unknown.lower == 0.0);
+  CHECK(unknown.upper == 1.0);
+}
+
+TEST_CASE("the Wilson interval refuses counts that are not a rate", "[evaluation][statistics]") {
+  CHECK_THROWS_WITH(wilson_interval(0, -1), Catch::Contains("trials") && Catch::Contains(">= 0"));
+  CHECK_THROWS_WITH(wilson_interval(11, 10), Catch::Contains("successes"));
+  CHECK_THROWS_WITH(wilson_interval(-1, 10), Catch::Contains("successes"));
+  CHECK_THROWS_WITH(wilson_interval(1, 10, 0.0), Catch::Contains("z"));
+  CHECK_THROWS_AS(wilson_interval(1, 10, std::numeric_limits<double>::quiet_NaN()),
+                  invalid_argument);
+}
+
+TEST_CASE("McNemar's exact test is the two-sided binomial tail of the discordant pairs",
+          "[evaluation][statistics]") {
+  // Exact sums: 2 (1 + 10) / 2^10, 2 / 2^5; 3 against 3 is no evidence at all.
+  CHECK(mcnemar_exact_p(1, 9) == Approx(0.021484375).epsilon(1e-12));
+  CHECK(mcnemar_exact_p(9, 1) == Approx(0.021484375).epsilon(1e-12));
+  CHECK(mcnemar_exact_p(0, 5) == Approx(0.0625).epsilon(1e-12));
+  CHECK(mcnemar_exact_p(3, 3) == 1.0);
+  CHECK(mcnemar_exact_p(0, 0) == 1.0);
+  // Large counts (exact sums in rational arithmetic, computed apart): no overflow or underflow.
+  CHECK(mcnemar_exact_p(100, 150) == Approx(0.001883300935076157).epsilon(1e-9));
+  CHECK(mcnemar_exact_p(2000, 2200) == Approx(0.0021323556719912346).epsilon(1e-7));
+  CHECK_THROWS_WITH(mcnemar_exact_p(-1, 3), Catch::Contains("only_first"));
+  CHECK_THROWS_WITH(mcnemar_exact_p(3, -1), Catch::Contains("only_second"));
+}
+
+TEST_CASE("a paired comparison counts the four kinds of pair", "[evaluation][statistics]") {
+  const std::vector<bool> a{true, true, false, false, true, true, true, true, true, true};
+  const std::vector<bool> b{true, false, true, false, false, false, false, false, false, false};
+  const PairedComparison c = compare_paired(a, b);
+  CHECK(c.both == 1);
+  CHECK(c.only_first == 7);
+  CHECK(c.only_second == 1);
+  CHECK(c.neither == 1);
+  CHECK(c.p_value == Approx(mcnemar_exact_p(7, 1)));
+  CHECK(c.p_value == Approx(2.0 * 9.0 / 256.0));
+  CHECK_THROWS_WITH(compare_paired(a, {true}), Catch::Contains("as many outcomes"));
+}
