@@ -10,7 +10,9 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <iterator>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,6 +20,7 @@
 #include <topograsp/evaluation/statistics.hpp>
 #include <topograsp/grasp/experiment.hpp>
 #include <topograsp/io/command_line.hpp>
+#include <topograsp/io/journal.hpp>
 #include <topograsp/io/output_folder.hpp>
 #include <topograsp/io/report.hpp>
 #include <topograsp/io/results.hpp>
@@ -30,24 +33,22 @@ namespace {
 using namespace topograsp;
 
 // "62% [36, 82]": a rate with its 95 % Wilson interval, in percent.
-std::string percent(int stable, int tested) {
-  if (tested == 0) return "-";
-  const RateInterval i = wilson_interval(stable, tested);
+std::string percent(const Json& stable, const Json& tested, const Json& interval) {
+  if (tested.as_number() == 0.0) return "-";
+  const auto& i = interval.as_array();
   char buf[40];
-  std::snprintf(buf, sizeof buf, "%.0f%% [%.0f, %.0f]", 100.0 * stable / tested, 100.0 * i.lower,
-                100.0 * i.upper);
+  std::snprintf(buf, sizeof buf, "%.0f%% [%.0f, %.0f]",
+                100.0 * stable.as_number() / tested.as_number(), 100.0 * i[0].as_number(),
+                100.0 * i[1].as_number());
   return buf;
 }
 
-// The stable count of method m on r by the deciding engine or the second judge.
-int stable_count(const ObjectResult& r, std::size_t m, bool second) {
-  const std::vector<bool> v = method_outcomes(r, m, second);
-  return static_cast<int>(std::count(v.begin(), v.end(), true));
-}
-
-// The paper's Table I next to ours, one column per object; with a second judge its rates too;
-// then each method against the topological one on the same grasps (McNemar's exact test).
-void print_table(const ExperimentOptions& experiment, const std::vector<ObjectResult>& results) {
+// The paper's Table I next to ours, one column per object, from results.json's summaries; with a
+// second judge its rates too; then each method against the topological one on the same grasps
+// (McNemar's exact test).
+void print_table(const Json& doc) {
+  const Json& config = doc.at("config");
+  const Json::Array& objects = doc.at("objects").as_array();
   const auto paper = [](const std::string& object, int row) -> std::string {
     // Table I of the paper: hammer, bottle; rows: grasps, stable, autoclose, topological.
     if (object == "hammer")
@@ -56,75 +57,232 @@ void print_table(const ExperimentOptions& experiment, const std::vector<ObjectRe
       return std::array<const char*, 4>{"151", "32", "25%", "63%"}[static_cast<std::size_t>(row)];
     return "-";
   };
-  const auto label = [](TransferMethod m) {
-    return m == TransferMethod::transplant    ? "Autoclose (transplant)"
-           : m == TransferMethod::topological ? "Topological synergies"
-                                              : "Fingertip mapping";
+  const auto label = [](const std::string& m) -> std::string {
+    return m == "transplant"    ? "Autoclose (transplant)"
+           : m == "topological" ? "Topological synergies"
+           : m == "fingertip"   ? "Fingertip mapping"
+                                : m;
   };
-  const auto header = [&](const char* title) {
-    std::printf("\n%-34s", title);
-    for (const ObjectResult& r : results) std::printf(" %26s", r.object.name.c_str());
+  const auto header = [&](const std::string& title) {
+    std::printf("\n%-34s", title.c_str());
+    for (const Json& o : objects) std::printf(" %26s", o.at("name").as_string().c_str());
     std::printf("\n");
   };
   const auto row = [&](const std::string& text, const auto& cell) {
     std::printf("%-34s", text.c_str());
-    for (const ObjectResult& r : results) std::printf(" %26s", cell(r).c_str());
+    for (const Json& o : objects) std::printf(" %26s", cell(o).c_str());
     std::printf("\n");
   };
-  const bool second = experiment.judge != Judge::builtin;
-  const std::string first_name(second && experiment.judge == Judge::mujoco ? "MuJoCo" : "built-in");
-  header(("TABLE I (paper | " + first_name + ", 95% CI)").c_str());
-  row("Total number of grasps", [&](const ObjectResult& r) {
-    return paper(r.object.name, 0) + " | " + std::to_string(r.hypotheses);
+  const std::string judge = config.at("judge").as_string();
+  const bool second = judge != "builtin";
+  const std::string first_name = judge == "mujoco" ? "MuJoCo" : "built-in";
+  const std::string second_name = judge == "mujoco" ? "built-in" : "MuJoCo";
+  std::vector<std::string> methods;
+  for (const Json& m : config.at("methods").as_array()) methods.push_back(m.as_string());
+  const auto summary = [](const Json& o, const std::string& m) -> const Json& {
+    return o.at("methods").at(m);
+  };
+  header("TABLE I (paper | " + first_name + ", 95% CI)");
+  row("Total number of grasps", [&](const Json& o) {
+    return paper(o.at("name").as_string(), 0) + " | " + o.at("hypotheses").dump(0);
   });
-  row("Stable grasps", [&](const ObjectResult& r) {
-    return paper(r.object.name, 1) + " | " + std::to_string(r.stable_human());
+  row("Stable grasps", [&](const Json& o) {
+    return paper(o.at("name").as_string(), 1) + " | " + o.at("stable_human").dump(0);
   });
-  for (std::size_t m = 0; m < experiment.methods.size(); ++m) {
-    const TransferMethod method = experiment.methods[m];
-    const int paper_row = method == TransferMethod::transplant    ? 2
-                          : method == TransferMethod::topological ? 3
-                                                                  : -1;
-    row(label(method), [&](const ObjectResult& r) {
-      return (paper_row >= 0 ? paper(r.object.name, paper_row) : "-") + " | " +
-             percent(stable_count(r, m, false), r.methods[m].tested);
+  for (const std::string& m : methods) {
+    const int paper_row = m == "transplant" ? 2 : m == "topological" ? 3 : -1;
+    row(label(m), [&](const Json& o) {
+      const Json& s = summary(o, m);
+      return (paper_row >= 0 ? paper(o.at("name").as_string(), paper_row) : "-") + " | " +
+             percent(s.at("stable"), s.at("tested"), s.at("interval"));
     });
   }
   if (second) {
-    const std::string second_name(experiment.judge == Judge::mujoco ? "built-in" : "MuJoCo");
-    header(("The same grasps judged by " + second_name + " (95% CI)").c_str());
-    row("Stable grasps", [&](const ObjectResult& r) {
-      int n = 0;
-      for (const HumanGrasp& g : r.human) n += g.second && g.second->stable ? 1 : 0;
-      return std::to_string(n);
+    header("The same grasps judged by " + second_name + " (95% CI)");
+    row("Stable grasps", [&](const Json& o) {
+      const Json& j = o.at("human").at("second_judge");
+      return j.is_null() ? std::string("-") : j.at("stable_second").dump(0);
     });
-    for (std::size_t m = 0; m < experiment.methods.size(); ++m)
-      row(label(experiment.methods[m]), [&](const ObjectResult& r) {
-        return percent(stable_count(r, m, true), r.methods[m].tested);
+    for (const std::string& m : methods)
+      row(label(m), [&](const Json& o) {
+        const Json& s = summary(o, m);
+        const Json& j = s.at("second_judge");
+        return j.is_null()
+                   ? std::string("-")
+                   : percent(j.at("stable_second"), s.at("tested"), j.at("interval_second"));
       });
   }
-  const auto topological =
-      std::find(experiment.methods.begin(), experiment.methods.end(), TransferMethod::topological);
-  if (topological == experiment.methods.end() || experiment.methods.size() < 2) return;
-  const std::size_t t = static_cast<std::size_t>(topological - experiment.methods.begin());
+  if (std::find(methods.begin(), methods.end(), "topological") == methods.end() ||
+      methods.size() < 2)
+    return;
   header("Against topological, same grasps:");
   std::printf("(held by this method only | by topological only, McNemar's exact p)\n");
-  for (std::size_t m = 0; m < experiment.methods.size(); ++m) {
-    if (m == t) continue;
-    for (const bool by_second : {false, true}) {
-      if (by_second && !second) continue;
+  for (const std::string& m : methods) {
+    if (m == "topological") continue;
+    for (const char* key : {"paired", "paired_second"}) {
+      if (key == std::string_view("paired_second") && !second) continue;
       const std::string engine =
-          !second ? ""
-                  : (by_second == (experiment.judge == Judge::mujoco) ? ", built-in" : ", MuJoCo");
-      row(label(experiment.methods[m]) + engine, [&](const ObjectResult& r) {
-        const PairedComparison c =
-            compare_paired(method_outcomes(r, m, by_second), method_outcomes(r, t, by_second));
+          !second ? "" : ", " + (key == std::string_view("paired") ? first_name : second_name);
+      row(label(m) + engine, [&](const Json& o) {
+        const Json& c = summary(o, m).at(key);
+        if (c.is_null()) return std::string("-");
         char buf[48];
-        std::snprintf(buf, sizeof buf, "%d | %d, p = %.2g", c.only_first, c.only_second, c.p_value);
+        std::snprintf(buf, sizeof buf, "%s | %s, p = %.2g", c.at("only_this").dump(0).c_str(),
+                      c.at("only_against").dump(0).c_str(), c.at("p_value").as_number());
         return std::string(buf);
       });
     }
   }
+}
+
+// The text of the file at path, or an error naming what.
+std::string read_file(const std::filesystem::path& path, const std::string& what) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw invalid_argument(what + ": cannot read \"" + path.string() + "\"");
+  return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+}
+
+// Copies the scene files of records from the folder from into the folder to (both hold scenes/).
+void copy_scenes(const std::vector<Json>& records, const std::filesystem::path& from,
+                 const std::filesystem::path& to) {
+  namespace fs = std::filesystem;
+  fs::create_directories(to / "scenes");
+  for (const Json& r : records) {
+    if (!r.at("scene").is_string()) continue;
+    const std::string& scene = r.at("scene").as_string();
+    std::error_code ec;
+    fs::copy_file(from / scene, to / scene, fs::copy_options::overwrite_existing, ec);
+    if (ec)
+      throw invalid_argument("cannot copy \"" + (from / scene).string() + "\" (" + ec.message() +
+                             ")");
+  }
+}
+
+// grasp_transfer merge: the shards' results.json and scenes into one output folder.
+int merge(const CommandLine& cli, bool& started, bool& committing) {
+  OutputFolder folder(cli.out, cli.force, "--out");
+  std::vector<Json> docs;
+  for (const std::filesystem::path& dir : cli.shards) {
+    if (!is_grasp_transfer_results(dir / "results.json"))
+      throw invalid_argument("merge: \"" + dir.string() +
+                             "\" holds no results.json of grasp_transfer");
+    docs.push_back(Json::parse(read_file(dir / "results.json", "merge")));
+  }
+  const Json doc = merge_results(docs);  // checks the shards: nothing is written before
+  started = true;
+  for (std::size_t i = 0; i < docs.size(); ++i)
+    copy_scenes(docs[i].at("grasps").as_array(), cli.shards[i], folder.staging());
+  detail::write_text_file(folder.staging() / "results.json", doc.dump(2) + "\n");
+  committing = true;
+  folder.commit();
+  print_table(doc);
+  std::printf("\n%zu shard(s) merged; results in %s\n", docs.size(),
+              (cli.out / "results.json").string().c_str());
+  return 0;
+}
+
+// The MJCF scene of each grasp of a hypothesis, into dir/scenes.
+void write_scenes(const std::filesystem::path& dir, const ExperimentOptions& experiment,
+                  const GraspObject& object, const HumanGrasp& g,
+                  const std::vector<RobotGrasp>& transfers) {
+  if (!g.reached) return;
+  detail::write_text_file(
+      dir / scene_path(object.name, g.id, "human"),
+      grasp_mjcf<models::human_hand>(object, g.hand_pose, g.q, g.object_pose, experiment.transfer));
+  for (const RobotGrasp& t : transfers)
+    if (t.planned)
+      detail::write_text_file(dir / scene_path(object.name, g.id, to_string(t.method)),
+                              grasp_mjcf<models::schunk_sdh>(object, t.hand_pose, t.q_closed,
+                                                             t.object_pose, experiment.transfer));
+}
+
+// The experiment: run (or resume), journal each hypothesis, write and commit the output folder.
+int run(CommandLine& cli, bool& started, bool& committing) {
+#ifdef TOPOGRASP_HAVE_MUJOCO
+  if (cli.experiment.judge != Judge::builtin) {
+    // MuJoCo judges each closed grasp with the same suite: the scene exported articulated
+    // (io/mjcf.hpp) and stepped through MujocoScene.
+    GraspSimOptions& sim = cli.experiment.transfer.sim;
+    sim.second_judge_human = [](const HandScene<models::human_hand>& scene,
+                                const StabilityOptions& o) {
+      return stability_suite(MujocoScene(scene), o);
+    };
+    sim.second_judge_sdh = [](const HandScene<models::schunk_sdh>& scene,
+                              const StabilityOptions& o) {
+      return stability_suite(MujocoScene(scene), o);
+    };
+    sim.second_judge_name = cli.experiment.judge == Judge::mujoco ? "builtin" : "mujoco";
+    sim.second_judge_decides = cli.experiment.judge == Judge::mujoco;
+  }
+#endif
+  if (cli.resume && cli.figures)
+    throw invalid_argument(
+        "--figures: draws the grasps of this run only, so not with --resume (draw them from a "
+        "run without it)");
+  validate_experiment_options(cli.experiment);
+  check_scene_names(cli.experiment);
+  OutputFolder folder(cli.out, cli.force, "--out", cli.resume);  // checked before any work
+  const std::filesystem::path& stage = folder.staging();
+  std::filesystem::create_directories(stage / "scenes");
+  const Json config = results_config(cli.experiment);
+  // --resume: the hypotheses that interrupted runs journalled (with all their scenes), once each.
+  std::vector<JournalEntry> resumed;
+  for (const std::filesystem::path& leftover : folder.leftovers()) {
+    if (!std::filesystem::exists(leftover / journal_file_name)) continue;
+    for (JournalEntry& e : read_journal(leftover / journal_file_name, config)) {
+      const bool seen = std::any_of(resumed.begin(), resumed.end(), [&](const JournalEntry& r) {
+        return r.object == e.object && r.id == e.id;
+      });
+      const bool whole = std::all_of(e.records.begin(), e.records.end(), [&](const Json& r) {
+        return !r.at("scene").is_string() ||
+               std::filesystem::exists(leftover / r.at("scene").as_string());
+      });
+      if (seen || !whole) continue;
+      copy_scenes(e.records, leftover, stage);
+      resumed.push_back(std::move(e));
+    }
+  }
+  folder.remove_leftovers();
+  ResultsJournal journal(stage / journal_file_name, config);
+  folder.keep_staging_on_failure();  // the journal is what --resume takes over
+  std::vector<ObjectRecords> earlier;
+  for (const JournalEntry& e : resumed) {
+    journal.append(e);
+    cli.experiment.skip.emplace_back(e.object, e.id);
+    auto o = std::find_if(earlier.begin(), earlier.end(),
+                          [&](const ObjectRecords& r) { return r.name == e.object; });
+    if (o == earlier.end()) o = earlier.insert(earlier.end(), ObjectRecords{e.object, 0, {}});
+    ++o->hypotheses;
+    o->grasps.insert(o->grasps.end(), e.records.begin(), e.records.end());
+  }
+  started = true;
+  const ProgressFn progress = [quiet = cli.quiet](std::string_view line) {
+    if (!quiet || line.starts_with("warning:")) std::cerr << line << '\n';
+  };
+  if (cli.resume)
+    progress(std::to_string(resumed.size()) + " hypotheses taken over from an interrupted run");
+  // Each finished hypothesis: its scenes, then its line in the journal.
+  const HypothesisDoneFn on_done = [&](const GraspObject& object, const HumanGrasp& g,
+                                       const std::vector<RobotGrasp>& transfers) {
+    write_scenes(stage, cli.experiment, object, g, transfers);
+    std::vector<const RobotGrasp*> ts;
+    for (const RobotGrasp& t : transfers) ts.push_back(&t);
+    journal.append({object.name, g.id, hypothesis_records(cli.experiment, object, g, ts)});
+  };
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<ObjectResult> results = run_experiment(cli.experiment, progress, on_done);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const Json doc = results_json(cli.experiment, results, earlier);
+  detail::write_text_file(stage / "results.json", doc.dump(2) + "\n");
+  if (cli.figures) (void)write_report(stage, results);
+  committing = true;
+  folder.commit();
+  print_table(doc);
+  std::printf("\n%.1f s with %d job(s); results in %s%s\n", seconds, cli.experiment.jobs,
+              (cli.out / "results.json").string().c_str(),
+              cli.figures ? (", figures in " + (cli.out / "index.html").string()).c_str() : "");
+  return 0;
 }
 
 }  // namespace
@@ -149,65 +307,7 @@ int main(int argc, char** argv) {
       std::fputs(command_line_usage().c_str(), stdout);
       return 0;
     }
-#ifdef TOPOGRASP_HAVE_MUJOCO
-    if (cli.experiment.judge != Judge::builtin) {
-      // MuJoCo judges each closed grasp with the same suite: the scene exported articulated
-      // (io/mjcf.hpp) and stepped through MujocoScene.
-      GraspSimOptions& sim = cli.experiment.transfer.sim;
-      sim.second_judge_human = [](const HandScene<models::human_hand>& scene,
-                                  const StabilityOptions& o) {
-        return stability_suite(MujocoScene(scene), o);
-      };
-      sim.second_judge_sdh = [](const HandScene<models::schunk_sdh>& scene,
-                                const StabilityOptions& o) {
-        return stability_suite(MujocoScene(scene), o);
-      };
-      sim.second_judge_name = cli.experiment.judge == Judge::mujoco ? "builtin" : "mujoco";
-      sim.second_judge_decides = cli.experiment.judge == Judge::mujoco;
-    }
-#endif
-    validate_experiment_options(cli.experiment);
-    check_scene_names(cli.experiment);
-    OutputFolder folder(cli.out, cli.force, "--out");  // checked before any work
-    started = true;
-    const auto t0 = std::chrono::steady_clock::now();
-    const ProgressFn progress = [quiet = cli.quiet](std::string_view line) {
-      if (!quiet || line.starts_with("warning:")) std::cerr << line << '\n';
-    };
-    const std::vector<ObjectResult> results = run_experiment(cli.experiment, progress);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    // Everything into the staging folder: the scenes of every tested grasp, results.json, the
-    // figures; then the commit puts them in place, results.json last.
-    const std::filesystem::path& stage = folder.staging();
-    std::filesystem::create_directories(stage / "scenes");
-    for (const ObjectResult& r : results) {
-      for (const HumanGrasp& g : r.human)
-        if (g.reached)
-          detail::write_text_file(
-              stage / scene_path(r.object.name, g.id, "human"),
-              grasp_mjcf<models::human_hand>(r.object, g.hand_pose, g.q, g.object_pose,
-                                             cli.experiment.transfer));
-      for (std::size_t m = 0; m < r.transfers.size(); ++m)
-        for (std::size_t k = 0; k < r.transfers[m].size(); ++k) {
-          const RobotGrasp& t = r.transfers[m][k];
-          if (!t.planned) continue;
-          detail::write_text_file(
-              stage / scene_path(r.object.name, r.transferred_ids[k], to_string(t.method)),
-              grasp_mjcf<models::schunk_sdh>(r.object, t.hand_pose, t.q_closed, t.object_pose,
-                                             cli.experiment.transfer));
-        }
-    }
-    detail::write_text_file(stage / "results.json",
-                            results_json(cli.experiment, results).dump(2) + "\n");
-    if (cli.figures) (void)write_report(stage, results);
-    committing = true;
-    folder.commit();
-    print_table(cli.experiment, results);
-    std::printf("\n%.1f s with %d job(s); results in %s%s\n", seconds, cli.experiment.jobs,
-                (cli.out / "results.json").string().c_str(),
-                cli.figures ? (", figures in " + (cli.out / "index.html").string()).c_str() : "");
-    return 0;
+    return cli.merge ? merge(cli, started, committing) : run(cli, started, committing);
   } catch (const std::exception& e) {
     std::cerr << "grasp_transfer: " << e.what() << '\n';
     if (committing)

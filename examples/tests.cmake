@@ -28,7 +28,11 @@ foreach(case IN ITEMS "unknown object|--objects anvil|--objects: unknown object 
                       "parameter out of range|--set backoff=1e300|--set: backoff: must be in \\[0, 0.3\\]"
                       "parameter set twice|--set backoff=0.1 --set backoff=0.2|--set: backoff is set twice"
                       "parameter without value|--set final_approach|--set: expected NAME=VALUE"
-                      "unknown winding reference|--winding-reference palm|--winding-reference: unknown reference")
+                      "unknown winding reference|--winding-reference palm|--winding-reference: unknown reference"
+                      "resume with figures|--resume --figures|--figures: draws the grasps of this run only"
+                      "merge without shards|merge --out x|merge: expected the shards' output folders"
+                      "merge with a run option|merge --jobs 2 x|--jobs: not an option of merge"
+                      "merge of a folder without a run|merge --out ${bad}-m /proc|merge: \"/proc\" holds no results.json of grasp_transfer")
   string(REPLACE "|" ";" parts "${case}")
   list(GET parts 0 name)
   list(GET parts 1 args)
@@ -57,3 +61,14 @@ add_test(NAME "example: grasp_transfer rejects an output folder inside a file"
 add_test(NAME "example: grasp_transfer --help" COMMAND grasp_transfer --help)
 set_tests_properties("example: grasp_transfer --help" PROPERTIES
                      PASS_REGULAR_EXPRESSION "backoff +0.03 +\\[0, 0.3\\]")
+# Two shards of a small run merged into one output folder (merge_results checks the document
+# against the whole run in tests/grasp/test_resume_merge.cpp); a shard missing is refused.
+add_test(NAME "example: grasp_transfer shards merged"
+         COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:grasp_transfer>
+                 -DDIR=${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_shards
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/shard_merge.cmake)
+# The Slurm job scripts (examples/slurm), run without Slurm as the scheduler would run them.
+add_test(NAME "example: slurm job scripts"
+         COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:grasp_transfer>
+                 -DDIR=${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_slurm
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/slurm/run_locally.cmake)

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <topograsp/io/html_page.hpp>
+#include <topograsp/io/journal.hpp>
 #include <topograsp/io/json.hpp>
 #include <topograsp/io/mjcf.hpp>
 #include <topograsp/io/report.hpp>

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -103,6 +104,32 @@ TEST_CASE("the option --hold-fraction sets the robot hand's hold fraction", "[io
   }
   CHECK_THAT(error_of({"--hold-fraction", "0.5", "--hold-fraction", "0.3"}),
              Catch::StartsWith("--hold-fraction: given twice"));
+}
+
+TEST_CASE("the resume flag, and merge with the shards' folders", "[io][command_line]") {
+  CHECK_FALSE(parse({}).resume);
+  CHECK(parse({"--resume"}).resume);
+  CHECK_FALSE(parse({}).merge);
+  const CommandLine m = parse({"merge", "--out", "all", "s1", "--quiet", "s2", "--force"});
+  CHECK(m.merge);
+  CHECK(m.out == "all");
+  CHECK(m.quiet);
+  CHECK(m.force);
+  CHECK(m.shards == std::vector<std::filesystem::path>{"s1", "s2"});
+  CHECK(parse({"merge", "s1"}).out == "grasp_transfer_out");
+  CHECK(parse({"merge", "--help"}).help);
+  CHECK(error_of({"merge"}) == "merge: expected the shards' output folders");
+  CHECK(error_of({"merge", "--out", "a"}) == "merge: expected the shards' output folders");
+  CHECK_THAT(error_of({"merge", "--jobs", "2", "s1"}),
+             Catch::StartsWith("--jobs: not an option of merge"));
+  CHECK_THAT(error_of({"merge", "--resume", "s1"}),
+             Catch::StartsWith("--resume: not an option of merge"));
+  CHECK(error_of({"merge", "--out"}) == "--out: expected a value");
+  CHECK(error_of({"merge", "--out", "--quiet", "s1"}) == "--out: expected a value");
+  CHECK(error_of({"merge", "--out", "a", "--out", "b", "s1"}) == "--out: given twice");
+  CHECK_THAT(error_of({"merge", "s1", ""}), Catch::StartsWith("merge: expected a shard's"));
+  // "merge" anywhere but first is not the subcommand.
+  CHECK_THAT(error_of({"--quiet", "merge"}), Catch::Contains("unknown option \"merge\""));
 }
 
 TEST_CASE("an option's value is never empty nor another option", "[io][command_line][bad-input]") {
@@ -246,10 +273,13 @@ TEST_CASE("the option --judge refuses an unknown engine, and MuJoCo where it is 
 
 TEST_CASE("the usage lists every option and every parameter with its range", "[io][command_line]") {
   const std::string usage = command_line_usage();
-  for (const char* option :
-       {"--objects", "--methods", "--out", "--force", "--jobs", "--seed", "--shard",
-        "--max-hypotheses", "--winding-reference", "--set", "--friction", "--hold-fraction",
-        "--judge", "--figures", "--quiet", "--help", "exit status", "results.json"}) {
+  for (const char* option : {"--objects",   "--methods",        "--out",
+                             "--force",     "--jobs",           "--seed",
+                             "--shard",     "--max-hypotheses", "--winding-reference",
+                             "--set",       "--friction",       "--hold-fraction",
+                             "--judge",     "--figures",        "--quiet",
+                             "--help",      "--resume",         "merge",
+                             "exit status", "results.json"}) {
     INFO(option);
     CHECK(usage.find(option) != std::string::npos);
   }
@@ -279,6 +309,8 @@ TEST_CASE("no argument list makes the parser throw anything but invalid_argument
                                                 "--figures",
                                                 "--quiet",
                                                 "--force",
+                                                "--resume",
+                                                "merge",
                                                 "--help",
                                                 "-h",
                                                 "",

@@ -54,6 +54,10 @@ struct ExperimentOptions {
   /// both, the built-in decides and MuJoCo's verdict is recorded beside it; with mujoco, MuJoCo's
   /// decides (transfer.sim.second_judge_decides) and the built-in's is recorded.
   Judge judge = Judge::builtin;
+  /// Hypotheses not to run, as (object name, hypothesis id): those an earlier run into the same
+  /// output folder has done (grasp_transfer --resume). They are left out of the results
+  /// (ObjectResult::hypotheses does not count them); the caller has their records.
+  std::vector<std::pair<std::string, int>> skip;
 };
 
 /// The numbers of one method on one object.
@@ -130,7 +134,8 @@ struct StartStdThread {
 };
 
 // Runs body(i) for i in [0, n) on up to `jobs` threads, the calling thread one of them; each index
-// once; the first exception of body is rethrown after every thread has been joined. Threads come
+// at most once; after an exception of body no thread starts a new index, and the first exception
+// is rethrown after every thread has been joined. Threads come
 // from start_thread(worker) (a std::thread); if starting one throws (std::system_error when the
 // system has no more threads, std::bad_alloc), no more are started and the work goes on with the
 // threads that did start (the calling thread always works), so a failed start never ends in
@@ -148,6 +153,7 @@ int parallel_for(int n, int jobs, const std::function<void(int)>& body,
       } catch (...) {
         const std::lock_guard lock(error_mutex);
         if (!error) error = std::current_exception();
+        next = n;  // no new work: the run has failed
       }
     }
   };
@@ -173,11 +179,19 @@ int parallel_for(int n, int jobs, const std::function<void(int)>& body,
 /// worker threads, one call at a time.
 using ProgressFn = std::function<void(std::string_view)>;
 
+/// Called once for each hypothesis when it is done: the object, the demonstration, and each
+/// method's transfer of it in options.methods order (empty when the demonstration was not
+/// stable). From worker threads, one call at a time, in no fixed order (grasp_transfer journals
+/// each hypothesis so that --resume can skip it). An exception it throws ends the run.
+using HypothesisDoneFn =
+    std::function<void(const GraspObject&, const HumanGrasp&, const std::vector<RobotGrasp>&)>;
+
 namespace detail {
 // run_experiment with the threads started by start_thread (a test seam, see parallel_for).
 template <class StartThread>
 std::vector<ObjectResult> run_experiment_with(const ExperimentOptions& options,
                                               const ProgressFn& progress,
+                                              const HypothesisDoneFn& on_done,
                                               StartThread&& start_thread);
 }  // namespace detail
 
@@ -186,8 +200,9 @@ std::vector<ObjectResult> run_experiment_with(const ExperimentOptions& options,
 /// max_hypotheses < 0, an empty object or method list, an object (by name) or a method given twice
 /// (their scenes would overwrite each other), an invalid object, or a transfer parameter outside
 /// its range (validate_transfer_parameters), a negative or non-finite transfer.sim.friction, a
-/// hold fraction outside (0, 1] (transfer.sim.close.hold_fraction, human_hold_fraction), or
-/// bad stability options (validate_stability_options, named "transfer.sim.stability.<option>").
+/// hold fraction outside (0, 1] (transfer.sim.close.hold_fraction, human_hold_fraction),
+/// bad stability options (validate_stability_options, named "transfer.sim.stability.<option>"),
+/// or a skipped hypothesis of an object that is not in the run.
 inline void validate_experiment_options(const ExperimentOptions& options) {
   if (options.jobs < 1) detail::throw_invalid_argument("jobs", "expected at least 1");
   if (options.shard_count < 1 || options.shard_index < 0 ||
@@ -228,90 +243,108 @@ inline void validate_experiment_options(const ExperimentOptions& options) {
         std::pair{options.transfer.sim.human_hold_fraction, "transfer.sim.human_hold_fraction"}})
     if (!(f > 0.0 && f <= 1.0)) detail::throw_invalid_argument(name, "expected a value in (0, 1]");
   validate_stability_options(options.transfer.sim.stability, "transfer.sim.stability");
+  for (const auto& [name, id] : options.skip)
+    if (std::none_of(options.objects.begin(), options.objects.end(),
+                     [&](const GraspObject& o) { return o.name == name; }))
+      detail::throw_invalid_argument("skip", "object \"" + name + "\" (hypothesis " +
+                                                 std::to_string(id) + ") is not in the run");
 }
 
 /// Runs the experiment described by \p options. Throws topograsp::invalid_argument naming the
-/// field, before any work, for the options validate_experiment_options refuses. Results are
-/// identical for equal options whatever the number of jobs, and a grasp's result does not depend on
-/// the other objects or the shard (grasp_seed). If fewer than \p options.jobs threads can be
-/// started, the run goes on with those that did (at least the calling thread) and says so once
-/// through \p progress, in a line that starts with "warning: ".
-[[nodiscard]] inline std::vector<ObjectResult> run_experiment(const ExperimentOptions& options,
-                                                              const ProgressFn& progress = {}) {
-  return detail::run_experiment_with(options, progress, detail::StartStdThread{});
+/// field, before any work, for the options validate_experiment_options refuses. Each hypothesis
+/// (of every object, but those in options.skip) is one task: its demonstration, then, if stable,
+/// each method's transfer of it; \p on_done is called when it is done. Results are identical for
+/// equal options whatever the number of jobs, and a grasp's result does not depend on the other
+/// objects or the shard (grasp_seed). If fewer than \p options.jobs threads can be started, the
+/// run goes on with those that did (at least the calling thread) and says so once through
+/// \p progress, in a line that starts with "warning: ".
+[[nodiscard]] inline std::vector<ObjectResult> run_experiment(
+    const ExperimentOptions& options, const ProgressFn& progress = {},
+    const HypothesisDoneFn& on_done = {}) {
+  return detail::run_experiment_with(options, progress, on_done, detail::StartStdThread{});
 }
 
 template <class StartThread>
 std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& options,
                                                       const ProgressFn& progress,
+                                                      const HypothesisDoneFn& on_done,
                                                       StartThread&& start_thread) {
   validate_experiment_options(options);
-  std::mutex progress_mutex;
+  std::mutex report_mutex;  // progress and on_done: one call at a time
   const auto say = [&](const std::string& line) {
     if (!progress) return;
-    const std::lock_guard lock(progress_mutex);
+    const std::lock_guard lock(report_mutex);
     progress(line);
   };
-  bool warned = false;
-  const auto run_parallel = [&](int n, const std::function<void(int)>& body) {
-    std::string start_error;
-    const int ran = detail::parallel_for(n, options.jobs, body, start_thread, &start_error);
-    if (!start_error.empty() && !warned) {
-      warned = true;
-      say("warning: could start only " + std::to_string(ran) + " of " +
-          std::to_string(std::min(options.jobs, n)) + " threads (" + start_error +
-          "); the run goes on with " + std::to_string(ran));
+  // Every task: (object index, hypothesis id), objects in order, ids ascending.
+  const std::size_t no = options.objects.size(), nm = options.methods.size();
+  std::vector<std::vector<GraspHypothesis>> hyps(no);
+  std::vector<std::pair<std::size_t, int>> tasks;
+  std::vector<ObjectResult> results(no);
+  std::vector<std::vector<std::size_t>> task_of(no);  // [object][k]: the task of its k-th id
+  for (std::size_t oi = 0; oi < no; ++oi) {
+    results[oi].object = options.objects[oi];
+    hyps[oi] = box_hypotheses(options.objects[oi]);
+    for (int i = 0; i < static_cast<int>(hyps[oi].size()); ++i) {
+      if (i % options.shard_count != options.shard_index ||
+          (options.max_hypotheses > 0 && i >= options.max_hypotheses))
+        continue;
+      const std::pair<std::string, int> key{options.objects[oi].name, i};
+      if (std::find(options.skip.begin(), options.skip.end(), key) != options.skip.end()) continue;
+      task_of[oi].push_back(tasks.size());
+      tasks.emplace_back(oi, i);
     }
-  };
-  std::vector<ObjectResult> results;
-  for (std::size_t oi = 0; oi < options.objects.size(); ++oi) {
-    ObjectResult res;
-    res.object = options.objects[oi];
-    std::vector<GraspHypothesis> hyps = box_hypotheses(res.object);
-    std::vector<int> ids;
-    for (int i = 0; i < static_cast<int>(hyps.size()); ++i)
-      if (i % options.shard_count == options.shard_index &&
-          (options.max_hypotheses <= 0 || i < options.max_hypotheses))
-        ids.push_back(i);
-    res.hypotheses = static_cast<int>(ids.size());
-    res.human.resize(ids.size());
-    std::atomic<int> done{0};
-    run_parallel(static_cast<int>(ids.size()), [&](int k) {
-      GraspSimOptions sim = options.transfer.sim;
-      const int id = ids[static_cast<std::size_t>(k)];
-      sim.stability.seed = grasp_seed(options.seed, res.object.name, id);
-      res.human[static_cast<std::size_t>(k)] =
-          demonstrate(res.object, hyps[static_cast<std::size_t>(id)], id, sim);
-      say("[" + res.object.name + "] human demonstrations " + std::to_string(++done) + "/" +
-          std::to_string(ids.size()));
-    });
-    for (const HumanGrasp& g : res.human)
-      if (g.stable()) res.transferred_ids.push_back(g.id);
-    std::vector<const HumanGrasp*> stable;
-    for (const HumanGrasp& g : res.human)
-      if (g.stable()) stable.push_back(&g);
-    const std::size_t nm = options.methods.size();
-    res.transfers.assign(nm, std::vector<RobotGrasp>(stable.size()));
-    done = 0;
-    const int total = static_cast<int>(nm * stable.size());
-    run_parallel(total, [&](int k) {
-      const std::size_t m = static_cast<std::size_t>(k) / std::max<std::size_t>(stable.size(), 1);
-      const std::size_t s = static_cast<std::size_t>(k) % std::max<std::size_t>(stable.size(), 1);
-      TransferOptions transfer_options = options.transfer;
-      const HumanGrasp& g = *stable[s];
-      transfer_options.sim.stability.seed = grasp_seed(options.seed, res.object.name, g.id);
-      res.transfers[m][s] = transfer(options.methods[m], res.object, g, transfer_options);
-      say("[" + res.object.name + "] transfers " + std::to_string(++done) + "/" +
-          std::to_string(total));
-    });
+    results[oi].hypotheses = static_cast<int>(task_of[oi].size());
+  }
+  std::vector<HumanGrasp> human(tasks.size());
+  std::vector<std::vector<RobotGrasp>> transfers(tasks.size());
+  std::atomic<int> done{0}, stable_done{0};
+  std::string start_error;
+  const int ran = detail::parallel_for(
+      static_cast<int>(tasks.size()), options.jobs,
+      [&](int k) {
+        const auto [oi, id] = tasks[static_cast<std::size_t>(k)];
+        const GraspObject& object = options.objects[oi];
+        TransferOptions transfer_options = options.transfer;
+        transfer_options.sim.stability.seed = grasp_seed(options.seed, object.name, id);
+        HumanGrasp& g = human[static_cast<std::size_t>(k)];
+        g = demonstrate(object, hyps[oi][static_cast<std::size_t>(id)], id, transfer_options.sim);
+        std::vector<RobotGrasp>& t = transfers[static_cast<std::size_t>(k)];
+        if (g.stable()) {
+          for (const TransferMethod m : options.methods)
+            t.push_back(transfer(m, object, g, transfer_options));
+          ++stable_done;
+        }
+        if (on_done) {
+          const std::lock_guard lock(report_mutex);
+          on_done(object, g, t);
+        }
+        say("[" + object.name + "] hypothesis " + std::to_string(id) + " done (" +
+            std::to_string(++done) + "/" + std::to_string(tasks.size()) + ", " +
+            std::to_string(stable_done.load()) + " stable demonstrations transferred)");
+      },
+      start_thread, &start_error);
+  if (!start_error.empty())
+    say("warning: could start only " + std::to_string(ran) + " of " +
+        std::to_string(
+            std::min<std::size_t>(static_cast<std::size_t>(options.jobs), tasks.size())) +
+        " threads (" + start_error + "); the run goes on with " + std::to_string(ran));
+  for (std::size_t oi = 0; oi < no; ++oi) {
+    ObjectResult& res = results[oi];
+    res.transfers.assign(nm, {});
+    for (const std::size_t k : task_of[oi]) {
+      res.human.push_back(std::move(human[k]));
+      if (!res.human.back().stable()) continue;
+      res.transferred_ids.push_back(res.human.back().id);
+      for (std::size_t m = 0; m < nm; ++m) res.transfers[m].push_back(std::move(transfers[k][m]));
+    }
     for (std::size_t m = 0; m < nm; ++m) {
       MethodSummary summary;
       summary.method = options.methods[m];
-      summary.tested = static_cast<int>(stable.size());
+      summary.tested = res.stable_human();
       for (const RobotGrasp& r : res.transfers[m]) summary.stable += r.stable() ? 1 : 0;
       res.methods.push_back(summary);
     }
-    results.push_back(std::move(res));
   }
   return results;
 }

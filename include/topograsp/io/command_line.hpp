@@ -30,6 +30,13 @@ struct CommandLine {
   bool figures = false;  ///< --figures: also DIR/figures/*.svg and DIR/index.html
   bool force = false;    ///< --force: write into a non-empty folder that holds no earlier run
   bool help = false;     ///< --help or -h: print command_line_usage() and do nothing else
+  /// --resume: skip the hypotheses that an interrupted run into DIR with the same options
+  /// journalled, and keep their records and scenes (docs/transfer.md)
+  bool resume = false;
+  /// `grasp_transfer merge [--out DIR] [--force] [--quiet] SHARD_DIR...`: merge the output
+  /// folders of a run's shards into DIR (merge is true, the shards' folders in shards).
+  bool merge = false;
+  std::vector<std::filesystem::path> shards;  ///< merge: the shards' output folders
 };
 
 /// The largest --jobs accepted.
@@ -120,13 +127,51 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
 /// object or method, an unknown
 /// --winding-reference, a --set that is not NAME=VALUE, names an unknown parameter, sets one twice
 /// or a value outside its range (transfer_parameters), an --out with a NUL character, an unknown
-/// --judge, and --judge mujoco or both when \p mujoco_linked is false. \p mujoco_linked says
+/// --judge, and --judge mujoco or both when \p mujoco_linked is false. With "merge" first: an
+/// option other than --out, --force, --quiet (the message says which it takes), --out without a
+/// value or twice, an empty shard folder name, or no shard folder. \p mujoco_linked says
 /// whether the program was built with MuJoCo (TOPOGRASP_HAVE_MUJOCO); it sets the default of
 /// --judge: both with MuJoCo, builtin without.
 [[nodiscard]] inline CommandLine parse_command_line(std::span<const std::string_view> args,
                                                     bool mujoco_linked = false) {
   CommandLine cli;
   cli.experiment.judge = mujoco_linked ? Judge::both : Judge::builtin;
+  if (!args.empty() && args.front() == "merge") {
+    cli.merge = true;
+    bool out_seen = false;
+    for (std::size_t i = 1; i < args.size(); ++i) {
+      const std::string_view arg = args[i];
+      if (arg == "--help" || arg == "-h") {
+        cli.help = true;
+        return cli;
+      }
+      if (arg == "--quiet" || arg == "--force") {
+        (arg == "--quiet" ? cli.quiet : cli.force) = true;
+      } else if (arg == "--out") {
+        if (out_seen) detail::throw_invalid_argument(arg, "given twice");
+        out_seen = true;
+        if (i + 1 >= args.size() || args[i + 1].empty() || args[i + 1].starts_with("--"))
+          detail::throw_invalid_argument(arg, "expected a value");
+        const std::string_view value = args[++i];
+        if (value.find('\0') != std::string_view::npos)
+          detail::throw_invalid_argument(arg, "the folder name contains a NUL character");
+        cli.out = std::filesystem::path(std::string(value));
+      } else if (arg.starts_with("-")) {
+        detail::throw_invalid_argument(
+            arg,
+            "not an option of merge (merge takes --out DIR, --force, --quiet and the "
+            "shards' output folders)");
+      } else if (arg.empty() || arg.find('\0') != std::string_view::npos) {
+        detail::throw_invalid_argument(
+            "merge", "expected a shard's output folder, got " + detail::quote_argument(arg));
+      } else {
+        cli.shards.emplace_back(std::string(arg));
+      }
+    }
+    if (cli.shards.empty())
+      detail::throw_invalid_argument("merge", "expected the shards' output folders");
+    return cli;
+  }
   std::string_view objects_list = "hammer,bottle";
   std::string_view methods_list = "topological,transplant,fingertip";
   std::vector<std::string_view> seen;  // value options given so far
@@ -147,6 +192,10 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
     }
     if (arg == "--force") {
       cli.force = true;
+      continue;
+    }
+    if (arg == "--resume") {
+      cli.resume = true;
       continue;
     }
     constexpr std::string_view value_options[] = {
@@ -275,6 +324,7 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
 /// the table of transfer parameters (name, default, valid range, meaning).
 [[nodiscard]] inline std::string command_line_usage() {
   std::string text = R"(usage: grasp_transfer [options]
+       grasp_transfer merge [--out DIR] [--force] [--quiet] SHARD_DIR...
 
 Transfers stable human grasps to the Schunk SDH (on a 7-DOF arm) and tests every result in
 simulation, as in "Topological Synergies for Grasp Transfer" (Table I).
@@ -289,7 +339,9 @@ options:
                    run goes on with those and says so
   --seed S         seed of the stability suites (default 1); same seed, same results
   --shard K/N      run only hypotheses with id % N == K - 1 (1 <= K <= N), for job arrays; the
-                   shards together give exactly the records of the whole run
+                   shards together give exactly the records of the whole run (see merge)
+  --resume         skip the hypotheses that an interrupted run into DIR with the same options
+                   finished (its journal), keeping their results and scenes
   --max-hypotheses M  only the first M hypotheses of each object (default 0: all)
   --winding-reference R  where the windings are taken: centre_of_mass (default, the paper)
                    or nearest_point (the object's point nearest the human's grasp centre)
@@ -319,6 +371,16 @@ beside it. DIR is checked before any work: a non-empty DIR without a results.jso
 grasp_transfer is refused unless --force, and so is a DIR where another run is writing (give each
 --shard its own --out); DIR/results.json and DIR/index.html must be files, DIR/scenes and
 DIR/figures folders. Other files in DIR are left alone.
+
+resume: every finished hypothesis is journalled in the staging folder (its records in
+journal.jsonl, its scenes in scenes/) as the run goes. A run that was killed or failed leaves
+them; --resume takes them over (if the options but --jobs are the same; else it is refused,
+naming the option that differs) and runs only the rest. Without --resume they are discarded.
+
+merge: grasp_transfer merge --out DIR SHARD_DIR... puts the output folders of a run's shards
+(--shard 1/N to N/N, each once, same options but --jobs) together into DIR: one results.json
+with every record and every summary computed over all of them, and every scene, as the unsharded
+run would have written them (but for the timings). The same output folder rule applies to DIR.
 
 exit status: 0 done; 2 bad arguments or an unusable output folder (nothing was computed);
 1 the run failed after it started (the previous run in DIR is untouched).

@@ -126,9 +126,12 @@ class OutputFolder {
   /// folder of an interrupted run (which proves that grasp_transfer wrote there: an interrupted
   /// commit leaves scenes/ without results.json). Nothing in DIR is changed then, except that DIR
   /// may have been created. With \p force every staging folder is removed.
+  /// With \p keep_leftovers the staging folders of interrupted runs are kept instead and listed
+  /// by leftovers(), for the caller to take what it needs (grasp_transfer --resume reads their
+  /// journals) before remove_leftovers().
   explicit OutputFolder(std::filesystem::path dir, bool force = false,
-                        std::string_view argument = "dir")
-      : dir_(std::move(dir)) {
+                        std::string_view argument = "dir", bool keep_leftovers = false)
+      : dir_(std::move(dir)), argument_(argument) {
     namespace fs = std::filesystem;
     const auto refuse = [&](const std::string& what) {
       detail::throw_invalid_argument(argument, what);
@@ -180,12 +183,8 @@ class OutputFolder {
              " is not empty and holds no results.json of grasp_transfer; use --force "
              "to write into it: the run then replaces results.json, scenes/, figures/ and "
              "index.html there");
-    for (const fs::path& p : leftovers) {
-      fs::remove_all(p, ec);
-      if (ec)
-        refuse("cannot remove the leftover staging folder \"" + p.string() + "\" (" + ec.message() +
-               ")");
-    }
+    leftovers_ = std::move(leftovers);
+    if (!keep_leftovers || force) remove_leftovers();
     staging_ = dir_ / detail::staging_folder_name();
     fs::create_directory(staging_, ec);
     if (ec) refuse("cannot write into " + shown + " (" + ec.message() + ")");
@@ -201,13 +200,36 @@ class OutputFolder {
   OutputFolder(const OutputFolder&) = delete;
   OutputFolder& operator=(const OutputFolder&) = delete;
 
-  /// Removes the staging folder if commit() was never called. After a commit() that failed part
-  /// way the staging folder stays: it holds the new run (the message of commit()'s exception
-  /// says where).
+  /// Removes the staging folder if commit() was never called (and keep_staging_on_failure()
+  /// was not). After a commit() that failed part way the staging folder stays: it holds the new
+  /// run (the message of commit()'s exception says where).
   ~OutputFolder() {
-    if (committing_) return;
+    if (committing_ || keep_staging_) return;
     std::error_code ec;
     std::filesystem::remove_all(staging_, ec);
+  }
+
+  /// Keeps the staging folder if the run is not committed (the destructor then leaves it, as a
+  /// killed run does): for a run that journals its progress there, so that a failed run can be
+  /// resumed. The next run into dir() removes it or, resuming, takes it over.
+  void keep_staging_on_failure() noexcept { keep_staging_ = true; }
+
+  /// The staging folders of interrupted runs that the constructor kept (keep_leftovers).
+  [[nodiscard]] const std::vector<std::filesystem::path>& leftovers() const noexcept {
+    return leftovers_;
+  }
+  /// Removes the staging folders of leftovers().
+  /// \throws topograsp::invalid_argument naming the constructor's argument if one cannot be
+  /// removed.
+  void remove_leftovers() {
+    std::error_code ec;
+    for (const std::filesystem::path& p : leftovers_) {
+      std::filesystem::remove_all(p, ec);
+      if (ec)
+        detail::throw_invalid_argument(argument_, "cannot remove the leftover staging folder \"" +
+                                                      p.string() + "\" (" + ec.message() + ")");
+    }
+    leftovers_.clear();
   }
 
   /// The output folder.
@@ -257,9 +279,12 @@ class OutputFolder {
 
  private:
   std::filesystem::path dir_;
+  std::string argument_;
   std::filesystem::path staging_;
+  std::vector<std::filesystem::path> leftovers_;
   bool committed_ = false;
   bool committing_ = false;  // commit() was called
+  bool keep_staging_ = false;
 };
 
 }  // namespace topograsp

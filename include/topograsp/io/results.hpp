@@ -82,6 +82,7 @@ inline void set_stability(Json& rec, const StabilityResult* s) {
     for (const StabilityRecord& t : s->tests) tests.push_back(json_record(t));
   rec.set("weight", s != nullptr ? Json(s->weight) : Json());
   rec.set("closing_penetration", s != nullptr ? Json(s->closing_penetration) : Json());
+  rec.set("collider_error", s != nullptr ? Json(s->collider_error) : Json());
   rec.set("tests", tests);
 }
 
@@ -94,7 +95,6 @@ inline void set_second_and_quality(Json& rec, const std::optional<StabilityResul
     j.set("engine", std::string(name));
     j.set("stable", second->stable);
     j.set("reason", second->reason);
-    j.set("collider_error", second->collider_error);
     set_stability(j, &*second);
     rec.set("second_judge", j);
   } else {
@@ -112,20 +112,6 @@ inline void set_second_and_quality(Json& rec, const std::optional<StabilityResul
   }
 }
 
-// A grasp judged by both engines: the first's verdict, the second's, and whether both colliders
-// measured the closed grasp's contacts to within k_collider_tolerance (the built-in's is exact;
-// with --judge mujoco MuJoCo's verdict is the first).
-struct Verdicts {
-  bool first = false;
-  bool second = false;
-  bool exact = false;
-};
-
-inline Verdicts verdicts_of(const StabilityResult& first, const StabilityResult& second) {
-  return {first.stable, second.stable,
-          std::max(first.collider_error, second.collider_error) <= k_collider_tolerance};
-}
-
 // A rate's 95 % Wilson interval as [lower, upper].
 inline Json json_interval(int successes, int trials) {
   const RateInterval i = wilson_interval(successes, trials);
@@ -135,30 +121,45 @@ inline Json json_interval(int successes, int trials) {
   return Json(std::move(a));
 }
 
-// Each engine's stable count over the grasps with both verdicts, the second engine's rate over
-// the \p tested grasps (those judged by neither count as failing) with its Wilson interval, and
-// how often the engines agree: over all judged grasps, and over those whose colliders were exact
-// at the start.
-inline Json agreement_summary(const std::vector<Verdicts>& verdicts, int tested,
-                              std::string_view second_name) {
-  if (verdicts.empty()) return Json();
-  int first = 0, second = 0, agree = 0, exact = 0, agree_exact = 0;
-  for (const Verdicts& v : verdicts) {
-    first += v.first ? 1 : 0;
-    second += v.second ? 1 : 0;
-    agree += v.first == v.second ? 1 : 0;
-    exact += v.exact ? 1 : 0;
-    agree_exact += v.exact && v.first == v.second ? 1 : 0;
+// A grasp record's verdict by the engine that decided, and by the second judge (false without
+// one).
+inline bool record_stable(const Json& rec) { return rec.at("stable").as_bool(); }
+inline bool record_stable_second(const Json& rec) {
+  const Json& j = rec.at("second_judge");
+  return !j.is_null() && j.at("stable").as_bool();
+}
+
+// The records' second-judge summary: each engine's stable count over the grasps with both
+// verdicts, the second engine's rate over the \p tested grasps (those judged by neither count as
+// failing) with its Wilson interval, and how often the engines agree: over all judged grasps, and
+// over those whose colliders were both exact to k_collider_tolerance when the tests began. Null
+// when no grasp has a second verdict.
+inline Json agreement_summary(const std::vector<const Json*>& records, int tested) {
+  int judged = 0, first = 0, second = 0, agree = 0, exact = 0, agree_exact = 0;
+  std::string engine;
+  for (const Json* rec : records) {
+    const Json& j = rec->at("second_judge");
+    if (j.is_null()) continue;
+    engine = j.at("engine").as_string();
+    const bool a = record_stable(*rec), b = j.at("stable").as_bool();
+    const bool e = std::max(rec->at("collider_error").as_number(),
+                            j.at("collider_error").as_number()) <= k_collider_tolerance;
+    ++judged;
+    first += a ? 1 : 0;
+    second += b ? 1 : 0;
+    agree += a == b ? 1 : 0;
+    exact += e ? 1 : 0;
+    agree_exact += e && a == b ? 1 : 0;
   }
-  const double n = static_cast<double>(verdicts.size());
+  if (judged == 0) return Json();
   Json s = Json::object();
-  s.set("engine", std::string(second_name));
-  s.set("judged", static_cast<int>(verdicts.size()));
+  s.set("engine", engine);
+  s.set("judged", judged);
   s.set("stable_first", first);
   s.set("stable_second", second);
   s.set("rate_second", tested > 0 ? second / static_cast<double>(tested) : 0.0);
   s.set("interval_second", json_interval(second, tested));
-  s.set("agreement", agree / n);
+  s.set("agreement", agree / static_cast<double>(judged));
   s.set("judged_exact", exact);
   s.set("agreement_exact", exact > 0 ? Json(agree_exact / static_cast<double>(exact)) : Json());
   return s;
@@ -172,21 +173,24 @@ inline Json json_median(std::vector<double> v) {
   return Json(n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
 }
 
-// The summary of a set of grasps (nullptr: not simulated, counts as failing every test): how
-// many, how many stable, the rate, each test's pass rate, and the median over the stable ones of
-// the paper shake's force ratio.
-inline Json stability_summary(const std::vector<const StabilityResult*>& grasps) {
+// The summary of a set of grasp records (one without tests - not simulated - fails every test):
+// how many, how many stable, the rate and its Wilson interval, each test's pass rate, the median
+// over the stable ones of the paper shake's force ratio, and the second judge's summary.
+inline Json stability_summary(const std::vector<const Json*>& records) {
   Json s = Json::object();
-  const int n = static_cast<int>(grasps.size());
+  const int n = static_cast<int>(records.size());
   int stable = 0;
   std::array<int, k_stability_tests> passed{};
   std::vector<double> ratios;
-  for (const StabilityResult* g : grasps) {
-    if (g == nullptr) continue;
-    for (std::size_t i = 0; i < k_stability_tests; ++i) passed[i] += g->tests[i].passed ? 1 : 0;
-    if (!g->stable) continue;
+  for (const Json* rec : records) {
+    const Json::Array& tests = rec->at("tests").as_array();
+    if (tests.size() != k_stability_tests) continue;
+    for (std::size_t i = 0; i < k_stability_tests; ++i)
+      passed[i] += tests[i].at("passed").as_bool() ? 1 : 0;
+    if (!record_stable(*rec)) continue;
     ++stable;
-    ratios.push_back(g->shake().force_ratio);
+    const Json& ratio = tests[0].at("force_ratio");
+    if (ratio.is_number()) ratios.push_back(ratio.as_number());
   }
   const auto rate = [n](int k) { return n > 0 ? static_cast<double>(k) / n : 0.0; };
   s.set("tested", n);
@@ -198,7 +202,37 @@ inline Json stability_summary(const std::vector<const StabilityResult*>& grasps)
     tests.set(std::string(to_string(static_cast<StabilityTest>(i))), rate(passed[i]));
   s.set("test_pass_rate", tests);
   s.set("median_force_ratio_stable", json_median(std::move(ratios)));
+  s.set("second_judge", agreement_summary(records, n));
   return s;
+}
+
+// A method's records against the topological method's on the same grasps (both in id order):
+// McNemar's exact test of the verdicts of the deciding engine or (\p second) the second judge.
+inline Json paired_summary(const std::vector<const Json*>& records,
+                           const std::vector<const Json*>& topological, bool second) {
+  if (records.size() != topological.size())
+    detail::throw_invalid_argument("grasps", "expected each method's transfers of the same " +
+                                                 std::to_string(topological.size()) +
+                                                 " demonstrations, got " +
+                                                 std::to_string(records.size()));
+  std::vector<bool> a, b;
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    if (records[i]->at("id").as_number() != topological[i]->at("id").as_number())
+      detail::throw_invalid_argument("grasps",
+                                     "expected each method's transfers of the same "
+                                     "demonstrations");
+    a.push_back(second ? record_stable_second(*records[i]) : record_stable(*records[i]));
+    b.push_back(second ? record_stable_second(*topological[i]) : record_stable(*topological[i]));
+  }
+  const PairedComparison c = compare_paired(a, b);
+  Json j = Json::object();
+  j.set("against", "topological");
+  j.set("both", c.both);
+  j.set("only_this", c.only_first);
+  j.set("only_against", c.only_second);
+  j.set("neither", c.neither);
+  j.set("p_value", c.p_value);
+  return j;
 }
 
 // The stability options as results.json's config writes them (angles in degrees).
@@ -238,10 +272,8 @@ inline void check_scene_names(const ExperimentOptions& options) {
                            scene_path(options.objects[i].name, 0, "human") + "\", ...");
 }
 
-/// results.json: {"generator": "topograsp grasp_transfer", "config": {...}, "objects": [...],
-/// "grasps": [...]}; see docs/transfer.md.
-[[nodiscard]] inline Json results_json(const ExperimentOptions& options,
-                                       const std::vector<ObjectResult>& results) {
+/// The "config" object of results.json for \p options (docs/transfer.md).
+[[nodiscard]] inline Json results_config(const ExperimentOptions& options) {
   Json cfg = Json::object();
   Json objects = Json::array(), methods = Json::array();
   for (const GraspObject& o : options.objects) objects.push_back(o.name);
@@ -269,122 +301,180 @@ inline void check_scene_names(const ExperimentOptions& options) {
     transfer.set(std::string(p.name), options.transfer.*(p.field));
   transfer.set("winding_reference", std::string(to_string(options.transfer.winding_reference)));
   cfg.set("transfer", transfer);
-  Json out_objects = Json::array();
-  Json grasps = Json::array();
-  for (const ObjectResult& r : results) {
-    Json o = Json::object();
-    o.set("name", r.object.name);
-    o.set("hypotheses", r.hypotheses);
-    o.set("stable_human", r.stable_human());
-    const std::string& second_name = options.transfer.sim.second_judge_name;
-    std::vector<const StabilityResult*> set;
-    std::vector<detail::Verdicts> verdicts;
-    for (const HumanGrasp& g : r.human)
-      if (g.reached) {
-        set.push_back(&g.stability);
-        if (g.second) verdicts.push_back(detail::verdicts_of(g.stability, *g.second));
-      }
-    Json human = detail::stability_summary(set);
-    human.set("second_judge",
-              detail::agreement_summary(verdicts, static_cast<int>(set.size()), second_name));
-    o.set("human", human);
+  return cfg;
+}
+
+/// The grasp records of one hypothesis of \p object: its demonstration \p g (none if the human
+/// hand did not reach the object) and each method's transfer of it, \p transfers in
+/// options.methods order (empty when the demonstration was not stable), in the order
+/// results_document sorts into.
+[[nodiscard]] inline std::vector<Json> hypothesis_records(
+    const ExperimentOptions& options, const GraspObject& object, const HumanGrasp& g,
+    const std::vector<const RobotGrasp*>& transfers) {
+  std::vector<Json> out;
+  if (!g.reached) return out;
+  const std::string& second_name = options.transfer.sim.second_judge_name;
+  const std::string seed = std::to_string(grasp_seed(options.seed, object.name, g.id));
+  Json rec = Json::object();
+  rec.set("object", object.name);
+  rec.set("id", g.id);
+  rec.set("method", "human");
+  rec.set("shake_seed", seed);
+  rec.set("stable", g.stable());
+  rec.set("scene", scene_path(object.name, g.id, "human"));
+  rec.set("winding_human", detail::json_vector(g.windings));
+  rec.set("winding_robot", Json::array());
+  rec.set("plan_ms", 0.0);
+  rec.set("sweeps", 0);
+  rec.set("reason", g.stability.reason);
+  detail::set_stability(rec, &g.stability);
+  detail::set_second_and_quality(rec, g.second, &g.quality, second_name);
+  out.push_back(std::move(rec));
+  for (const RobotGrasp* tp : transfers) {
+    const RobotGrasp& t = *tp;
+    Json r = Json::object();
+    r.set("object", object.name);
+    r.set("id", g.id);
+    r.set("method", to_string(t.method));
+    r.set("shake_seed", seed);
+    r.set("stable", t.stable());
+    r.set("scene", t.planned ? Json(scene_path(object.name, g.id, to_string(t.method))) : Json());
+    // The human's y as the method used it (topological: around its winding reference).
+    r.set("winding_human",
+          detail::json_vector(t.winding_targets.empty() ? g.descriptor.values
+                                                        : t.winding_targets.back()));
+    r.set("winding_robot", detail::json_vector(t.winding));
+    r.set("plan_ms", t.plan_ms);
+    r.set("sweeps", t.sweeps);
+    r.set("reason", t.planned ? t.stability.reason : t.reason);
+    detail::set_stability(r, t.planned ? &t.stability : nullptr);
+    detail::set_second_and_quality(r, t.planned ? t.second : std::nullopt,
+                                   t.planned ? &t.quality : nullptr, second_name);
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+/// One object's part of a results.json: how many hypotheses were run and their grasp records
+/// (hypothesis_records), in any order.
+struct ObjectRecords {
+  std::string name;
+  int hypotheses = 0;
+  std::vector<Json> grasps;
+};
+
+/// results.json from its \p config (results_config) and each object's records: the objects in
+/// config order, each object's records sorted (the demonstrations by id, then each method of
+/// config["methods"] in turn by id), and every summary computed from the records. So shards'
+/// records put together give the document of the whole run (grasp_transfer merge).
+/// \throws topograsp::invalid_argument naming "grasps" if a record's method is not in the config,
+/// a (method, id) appears twice, or the methods did not transfer the same demonstrations; naming
+/// "objects" if an object is not in the config or is given twice.
+[[nodiscard]] inline Json results_document(const Json& config, std::vector<ObjectRecords> objects) {
+  std::vector<std::string> methods;
+  for (const Json& m : config.at("methods").as_array()) methods.push_back(m.as_string());
+  std::vector<std::string> names;
+  for (const Json& o : config.at("objects").as_array()) names.push_back(o.as_string());
+  const auto id_text = [](const Json& rec) {
+    return "hypothesis " + std::to_string(static_cast<long long>(rec.at("id").as_number()));
+  };
+  const auto index_of = [](const std::vector<std::string>& v, const std::string& x) {
+    return static_cast<std::size_t>(std::find(v.begin(), v.end(), x) - v.begin());
+  };
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    if (index_of(names, objects[i].name) == names.size())
+      detail::throw_invalid_argument("objects",
+                                     "\"" + objects[i].name + "\" is not in the config's objects");
+    for (std::size_t j = 0; j < i; ++j)
+      if (objects[i].name == objects[j].name)
+        detail::throw_invalid_argument("objects", "\"" + objects[i].name + "\" is given twice");
+  }
+  std::sort(objects.begin(), objects.end(), [&](const ObjectRecords& a, const ObjectRecords& b) {
+    return index_of(names, a.name) < index_of(names, b.name);
+  });
+  Json out_objects = Json::array(), grasps = Json::array();
+  for (ObjectRecords& o : objects) {
+    // The sort key: (method: the demonstration first, then config order; id).
+    const auto key = [&](const Json& rec) {
+      const std::string& m = rec.at("method").as_string();
+      const std::size_t mi = m == "human" ? 0 : index_of(methods, m) + 1;
+      if (mi == methods.size() + 1)
+        detail::throw_invalid_argument("grasps", "method \"" + m + "\" of " + o.name + " " +
+                                                     id_text(rec) +
+                                                     " is not in the config's methods");
+      return std::pair{mi, rec.at("id").as_number()};
+    };
+    std::sort(o.grasps.begin(), o.grasps.end(),
+              [&](const Json& a, const Json& b) { return key(a) < key(b); });
+    for (std::size_t i = 1; i < o.grasps.size(); ++i)
+      if (key(o.grasps[i - 1]) == key(o.grasps[i]))
+        detail::throw_invalid_argument("grasps", o.name + " " + id_text(o.grasps[i]) + " by " +
+                                                     o.grasps[i].at("method").as_string() +
+                                                     " is given twice");
+    std::vector<std::vector<const Json*>> by(methods.size() + 1);
+    for (const Json& rec : o.grasps) by[key(rec).first].push_back(&rec);
+    Json obj = Json::object();
+    obj.set("name", o.name);
+    obj.set("hypotheses", o.hypotheses);
+    obj.set("stable_human",
+            static_cast<int>(std::count_if(by[0].begin(), by[0].end(), [](const Json* r) {
+              return detail::record_stable(*r);
+            })));
+    obj.set("human", detail::stability_summary(by[0]));
+    const std::size_t topological = index_of(methods, "topological") + 1;
+    const bool second = std::any_of(o.grasps.begin(), o.grasps.end(), [](const Json& r) {
+      return r.at("method").as_string() != "human" && !r.at("second_judge").is_null();
+    });
     Json ms = Json::object();
-    const auto topological = std::find_if(
-        r.methods.begin(), r.methods.end(),
-        [](const MethodSummary& m) { return m.method == TransferMethod::topological; });
-    const bool with_second =
-        std::any_of(r.transfers.begin(), r.transfers.end(), [](const std::vector<RobotGrasp>& ts) {
-          return std::any_of(ts.begin(), ts.end(), [](const RobotGrasp& t) { return t.second; });
-        });
-    for (std::size_t m = 0; m < r.methods.size(); ++m) {
-      set.clear();
-      verdicts.clear();
-      for (const RobotGrasp& t : r.transfers[m]) {
-        set.push_back(t.planned ? &t.stability : nullptr);
-        if (t.planned && t.second) verdicts.push_back(detail::verdicts_of(t.stability, *t.second));
-      }
-      Json s = detail::stability_summary(set);
-      s.set("tested", r.methods[m].tested);
-      s.set("stable", r.methods[m].stable);
-      s.set("rate", r.methods[m].rate());
-      s.set("interval", detail::json_interval(r.methods[m].stable, r.methods[m].tested));
-      s.set("second_judge", detail::agreement_summary(verdicts, r.methods[m].tested, second_name));
+    for (std::size_t m = 0; m < methods.size(); ++m) {
+      Json summary = detail::stability_summary(by[m + 1]);
       // Against the topological method on the same grasps (same shakes): McNemar's exact test.
-      const auto paired = [&](bool second_judge) -> Json {
-        if (topological == r.methods.end() || r.methods[m].method == TransferMethod::topological ||
-            (second_judge && !with_second))
-          return Json();
-        const std::size_t t = static_cast<std::size_t>(topological - r.methods.begin());
-        const PairedComparison c = compare_paired(method_outcomes(r, m, second_judge),
-                                                  method_outcomes(r, t, second_judge));
-        Json j = Json::object();
-        j.set("against", "topological");
-        j.set("both", c.both);
-        j.set("only_this", c.only_first);
-        j.set("only_against", c.only_second);
-        j.set("neither", c.neither);
-        j.set("p_value", c.p_value);
-        return j;
-      };
-      s.set("paired", paired(false));
-      s.set("paired_second", paired(true));
-      ms.set(to_string(r.methods[m].method), s);
+      const bool paired = topological <= methods.size() && m + 1 != topological;
+      summary.set("paired",
+                  paired ? detail::paired_summary(by[m + 1], by[topological], false) : Json());
+      summary.set("paired_second", paired && second
+                                       ? detail::paired_summary(by[m + 1], by[topological], true)
+                                       : Json());
+      ms.set(methods[m], summary);
     }
-    o.set("methods", ms);
-    out_objects.push_back(o);
-    for (const HumanGrasp& g : r.human) {
-      if (!g.reached) continue;
-      Json rec = Json::object();
-      rec.set("object", r.object.name);
-      rec.set("id", g.id);
-      rec.set("method", "human");
-      rec.set("shake_seed", std::to_string(grasp_seed(options.seed, r.object.name, g.id)));
-      rec.set("stable", g.stable());
-      rec.set("scene", scene_path(r.object.name, g.id, "human"));
-      rec.set("winding_human", detail::json_vector(g.windings));
-      rec.set("winding_robot", Json::array());
-      rec.set("plan_ms", 0.0);
-      rec.set("sweeps", 0);
-      rec.set("reason", g.stability.reason);
-      detail::set_stability(rec, &g.stability);
-      detail::set_second_and_quality(rec, g.second, &g.quality, second_name);
-      grasps.push_back(rec);
-    }
-    for (std::size_t m = 0; m < r.methods.size(); ++m) {
-      for (std::size_t k = 0; k < r.transfers[m].size(); ++k) {
-        const RobotGrasp& t = r.transfers[m][k];
-        const int id = r.transferred_ids[k];
-        const HumanGrasp& g = *std::find_if(r.human.begin(), r.human.end(),
-                                            [&](const HumanGrasp& h) { return h.id == id; });
-        Json rec = Json::object();
-        rec.set("object", r.object.name);
-        rec.set("id", id);
-        rec.set("method", to_string(r.methods[m].method));
-        rec.set("shake_seed", std::to_string(grasp_seed(options.seed, r.object.name, id)));
-        rec.set("stable", t.stable());
-        rec.set("scene",
-                t.planned ? Json(scene_path(r.object.name, id, to_string(t.method))) : Json());
-        // The human's y as the method used it (topological: around its winding reference).
-        rec.set("winding_human",
-                detail::json_vector(t.winding_targets.empty() ? g.descriptor.values
-                                                              : t.winding_targets.back()));
-        rec.set("winding_robot", detail::json_vector(t.winding));
-        rec.set("plan_ms", t.plan_ms);
-        rec.set("sweeps", t.sweeps);
-        rec.set("reason", t.planned ? t.stability.reason : t.reason);
-        detail::set_stability(rec, t.planned ? &t.stability : nullptr);
-        detail::set_second_and_quality(rec, t.planned ? t.second : std::nullopt,
-                                       t.planned ? &t.quality : nullptr, second_name);
-        grasps.push_back(rec);
-      }
-    }
+    obj.set("methods", ms);
+    out_objects.push_back(obj);
+    for (Json& rec : o.grasps) grasps.push_back(std::move(rec));
   }
   Json doc = Json::object();
   doc.set("generator", std::string(results_generator));
-  doc.set("config", cfg);
+  doc.set("config", config);
   doc.set("objects", out_objects);
   doc.set("grasps", grasps);
   return doc;
+}
+
+/// results.json: {"generator": "topograsp grasp_transfer", "config": {...}, "objects": [...],
+/// "grasps": [...]}; see docs/transfer.md. \p earlier: records of hypotheses an earlier run did
+/// (options.skip; grasp_transfer --resume), by object name, with the number of them.
+[[nodiscard]] inline Json results_json(const ExperimentOptions& options,
+                                       const std::vector<ObjectResult>& results,
+                                       const std::vector<ObjectRecords>& earlier = {}) {
+  std::vector<ObjectRecords> objects;
+  for (const ObjectResult& r : results) {
+    ObjectRecords o{r.object.name, r.hypotheses, {}};
+    for (const HumanGrasp& g : r.human) {
+      const auto k = std::find(r.transferred_ids.begin(), r.transferred_ids.end(), g.id);
+      std::vector<const RobotGrasp*> transfers;
+      if (k != r.transferred_ids.end())
+        for (const std::vector<RobotGrasp>& ts : r.transfers)
+          transfers.push_back(&ts[static_cast<std::size_t>(k - r.transferred_ids.begin())]);
+      for (Json& rec : hypothesis_records(options, r.object, g, transfers))
+        o.grasps.push_back(std::move(rec));
+    }
+    for (const ObjectRecords& e : earlier)
+      if (e.name == o.name) {
+        o.hypotheses += e.hypotheses;
+        o.grasps.insert(o.grasps.end(), e.grasps.begin(), e.grasps.end());
+      }
+    objects.push_back(std::move(o));
+  }
+  return results_document(results_config(options), std::move(objects));
 }
 
 }  // namespace topograsp
