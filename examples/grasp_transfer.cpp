@@ -58,18 +58,23 @@ void print_table(const Json& doc) {
     return "-";
   };
   const auto label = [](const std::string& m) -> std::string {
-    return m == "transplant"    ? "Autoclose (transplant)"
-           : m == "topological" ? "Topological synergies"
-           : m == "fingertip"   ? "Fingertip mapping"
-                                : m;
+    return m == "transplant"       ? "Autoclose (transplant)"
+           : m == "topological"    ? "Topological synergies"
+           : m == "fingertip"      ? "Fingertip mapping"
+           : m == "paper"          ? "Topological, as in the paper"
+           : m == "paper_line"     ? "  paper + line task"
+           : m == "paper_approach" ? "  paper + final approach"
+           : m == "no_windings"    ? "  topological, no windings"
+           : m == "nearest_point"  ? "  topological, nearest point"
+                                   : m;
   };
   const auto header = [&](const std::string& title) {
-    std::printf("\n%-34s", title.c_str());
+    std::printf("\n%-44s", title.c_str());
     for (const Json& o : objects) std::printf(" %26s", o.at("name").as_string().c_str());
     std::printf("\n");
   };
   const auto row = [&](const std::string& text, const auto& cell) {
-    std::printf("%-34s", text.c_str());
+    std::printf("%-44s", text.c_str());
     for (const Json& o : objects) std::printf(" %26s", cell(o).c_str());
     std::printf("\n");
   };
@@ -90,7 +95,7 @@ void print_table(const Json& doc) {
     return paper(o.at("name").as_string(), 1) + " | " + o.at("stable_human").dump(0);
   });
   for (const std::string& m : methods) {
-    const int paper_row = m == "transplant" ? 2 : m == "topological" ? 3 : -1;
+    const int paper_row = m == "transplant" ? 2 : m == "topological" || m == "paper" ? 3 : -1;
     row(label(m), [&](const Json& o) {
       const Json& s = summary(o, m);
       return (paper_row >= 0 ? paper(o.at("name").as_string(), paper_row) : "-") + " | " +

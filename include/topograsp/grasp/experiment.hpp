@@ -243,11 +243,11 @@ inline void validate_experiment_options(const ExperimentOptions& options) {
         std::pair{options.transfer.sim.human_hold_fraction, "transfer.sim.human_hold_fraction"}})
     if (!(f > 0.0 && f <= 1.0)) detail::throw_invalid_argument(name, "expected a value in (0, 1]");
   validate_stability_options(options.transfer.sim.stability, "transfer.sim.stability");
-  for (const auto& [name, id] : options.skip)
+  for (const std::pair<std::string, int>& s : options.skip)
     if (std::none_of(options.objects.begin(), options.objects.end(),
-                     [&](const GraspObject& o) { return o.name == name; }))
-      detail::throw_invalid_argument("skip", "object \"" + name + "\" (hypothesis " +
-                                                 std::to_string(id) + ") is not in the run");
+                     [&](const GraspObject& o) { return o.name == s.first; }))
+      detail::throw_invalid_argument("skip", "object \"" + s.first + "\" (hypothesis " +
+                                                 std::to_string(s.second) + ") is not in the run");
 }
 
 /// Runs the experiment described by \p options. Throws topograsp::invalid_argument naming the

@@ -57,9 +57,38 @@ enum class WindingReference : std::uint8_t {
 }
 
 /// The transfer methods.
-enum class TransferMethod : std::uint8_t { topological, transplant, fingertip };
+///
+/// The topological method has named variants, so that the paper's method and each of our additions
+/// to it are rows of one table (docs/results.md); each is `transfer_topological` with some of
+/// TransferOptions set (transfer_method_options), on top of the options given:
+/// - topological: topograsp's method as shipped: the paper's tasks (the two largest windings
+///   around the centre of mass, the approach axis, collision), plus the SDH's grasp centre on the
+///   human's approach line (the line task) and the final approach until contact;
+/// - paper: the paper's method as the paper states it: no line task, no final approach;
+/// - paper_line: the paper's method plus the line task only;
+/// - paper_approach: the paper's method plus the final approach until contact only;
+/// - no_windings: topograsp's method without the winding targets (the same plan otherwise);
+/// - nearest_point: topograsp's method with the windings taken around the object's point nearest
+///   the human's grasp centre.
+enum class TransferMethod : std::uint8_t {
+  topological,
+  transplant,
+  fingertip,
+  paper,
+  paper_line,
+  paper_approach,
+  no_windings,
+  nearest_point
+};
 
-/// The name of \p m ("topological", "transplant", "fingertip").
+/// Every transfer method, in the order --help lists them.
+inline constexpr std::array<TransferMethod, 8> all_transfer_methods{
+    TransferMethod::topological, TransferMethod::transplant,   TransferMethod::fingertip,
+    TransferMethod::paper,       TransferMethod::paper_line,   TransferMethod::paper_approach,
+    TransferMethod::no_windings, TransferMethod::nearest_point};
+
+/// The name of \p m ("topological", "transplant", "fingertip", "paper", "paper_line",
+/// "paper_approach", "no_windings", "nearest_point").
 [[nodiscard]] constexpr std::string_view to_string(TransferMethod m) noexcept {
   switch (m) {
     case TransferMethod::topological:
@@ -68,16 +97,38 @@ enum class TransferMethod : std::uint8_t { topological, transplant, fingertip };
       return "transplant";
     case TransferMethod::fingertip:
       return "fingertip";
+    case TransferMethod::paper:
+      return "paper";
+    case TransferMethod::paper_line:
+      return "paper_line";
+    case TransferMethod::paper_approach:
+      return "paper_approach";
+    case TransferMethod::no_windings:
+      return "no_windings";
+    case TransferMethod::nearest_point:
+      return "nearest_point";
   }
   return "unknown";
 }
 
-/// The method called \p name ("topological", "transplant" or "fingertip").
+/// Whether \p m is the topological method or one of its named variants (transfer_topological).
+[[nodiscard]] constexpr bool is_topological(TransferMethod m) noexcept {
+  return m != TransferMethod::transplant && m != TransferMethod::fingertip;
+}
+
+/// The method called \p name (to_string of one of all_transfer_methods).
 /// \throws topograsp::invalid_argument naming "method" for any other name.
 [[nodiscard]] inline TransferMethod transfer_method(std::string_view name) {
-  return enum_from_name(
-      name, {TransferMethod::topological, TransferMethod::transplant, TransferMethod::fingertip},
-      "method", "method");
+  for (const TransferMethod m : all_transfer_methods)
+    if (to_string(m) == name) return m;
+  std::string expected;
+  for (std::size_t i = 0; i < all_transfer_methods.size(); ++i)
+    expected += std::string(i == 0                                 ? ""
+                            : i + 1 == all_transfer_methods.size() ? " or "
+                                                                   : ", ") +
+                std::string(to_string(all_transfer_methods[i]));
+  detail::throw_invalid_argument(
+      "method", "unknown method \"" + std::string(name) + "\" (expected " + expected + ")");
 }
 
 /// The parameters of the transfer methods; every field has a default used by grasp_transfer.
@@ -124,6 +175,12 @@ struct TransferOptions {
   /// Scale of the human's three tip positions about their centroid before the fit (the robot's
   /// size over the human's); 0 = the SDH/human ratio of the mapped digits' lengths (about 2.17).
   double fingertip_scale = 0.0;
+  /// How far the transplant baseline opens the SDH before it is placed (rad): its proximal
+  /// joints at -opening, its distal joints at +opening (the tips kept pointing inward), the
+  /// knuckle as in sdh_preshape (transplant_preshape). Default 0.7, the best of a sweep over
+  /// 0.3 to 1.1 on the hammer and the bottle, seeds 1 to 4 (docs/results.md): a baseline is
+  /// given its best setting, not one known to fail (sdh_preshape's 0.3 fails every bottle grasp).
+  double transplant_opening = 0.7;
 };
 
 /// One numeric parameter of TransferOptions that a command line or a result file names: its name,
@@ -139,7 +196,7 @@ struct TransferParameter {
 /// The numeric parameters of TransferOptions (grasp_transfer --set NAME=VALUE; the "transfer"
 /// object of results.json), each with the range set_transfer_parameter accepts. Lengths are in
 /// m, precisions are task weights (per m^2 for the line task); 0 switches a task's term off.
-inline constexpr std::array<TransferParameter, 13> transfer_parameters{{
+inline constexpr std::array<TransferParameter, 14> transfer_parameters{{
     {"backoff", &TransferOptions::backoff, 0.0, 0.3,
      "m: the human grasp centre's start beyond the SDH's, along the approach"},
     {"winding_precision_mid", &TransferOptions::winding_precision_mid, 0.0, 1e6,
@@ -164,6 +221,8 @@ inline constexpr std::array<TransferParameter, 13> transfer_parameters{{
      "per m^2 or rad^2: the fingertip fit's pull to the transplant"},
     {"fingertip_scale", &TransferOptions::fingertip_scale, 0.0, 10.0,
      "the human tips' scale; 0 derives it (2.175)"},
+    {"transplant_opening", &TransferOptions::transplant_opening, 0.0, 1.5,
+     "rad: how far the transplant opens the SDH's fingers"},
 }};
 
 /// The entry of transfer_parameters called \p name, or nullptr.
@@ -392,6 +451,18 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
 /// The paper's baseline: the SDH at the human hand's pose (its grasp centre at the human's, its
 /// approach along the human's), backed off only as far as needed to clear the object, then the
 /// fingers closed until contact.
+/// The SDH's joints of the transplant baseline before closing: sdh_preshape's knuckle, the
+/// proximal joints of the fingers and the thumb at -options.transplant_opening, the distal ones at
+/// +options.transplant_opening.
+[[nodiscard]] inline Vec<7> transplant_preshape(const TransferOptions& options) {
+  Vec<7> q = options.sdh_preshape;
+  for (const int i : {1, 3, 5}) {
+    q[i] = -options.transplant_opening;
+    q[i + 1] = options.transplant_opening;
+  }
+  return q;
+}
+
 [[nodiscard]] inline RobotGrasp transfer_transplant(const GraspObject& object, const HumanGrasp& g,
                                                     const TransferOptions& options = {}) {
   const auto t0 = detail::Clock::now();
@@ -400,17 +471,18 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
   r.reason = detail::unusable_human_grasp(g);
   if (!r.reason.empty()) return r;
   const Eigen::Isometry3d target = detail::sdh_grasp_target(g);
-  const auto root = place_at_contact(object, detail::sdh_root_for_grasp_centre(target),
-                                     options.sdh_preshape, target.linear().col(2), options.sim);
+  const Vec<7> preshape = transplant_preshape(options);
+  const auto root = place_at_contact(object, detail::sdh_root_for_grasp_centre(target), preshape,
+                                     target.linear().col(2), options.sim);
   r.plan_ms = detail::ms_since(t0);
   if (!root) {
     r.reason = "the hand cannot be placed clear of the object";
     return r;
   }
-  r.reason = detail::unusable_sdh_pose(*root, options.sdh_preshape);
+  r.reason = detail::unusable_sdh_pose(*root, preshape);
   if (!r.reason.empty()) return r;
   r.planned = true;
-  simulate_sdh_grasp(object, *root, options.sdh_preshape, options, r);
+  simulate_sdh_grasp(object, *root, preshape, options, r);
   return r;
 }
 
@@ -686,18 +758,39 @@ using TopologicalTaskSet =
   return r;
 }
 
-/// Runs \p method on the human grasp \p g.
+/// \p options as the topological variant \p method runs with (see TransferMethod): the paper's
+/// method switches the line task and the final approach off (line_precision_mid/_end and
+/// final_approach 0), paper_line only the final approach, paper_approach only the line task;
+/// no_windings sets both winding precisions to 0; nearest_point the nearest-point winding
+/// reference. topological and the other methods take \p options as given.
+[[nodiscard]] inline TransferOptions transfer_method_options(TransferMethod method,
+                                                             TransferOptions options) {
+  const bool no_line = method == TransferMethod::paper || method == TransferMethod::paper_approach;
+  const bool no_approach = method == TransferMethod::paper || method == TransferMethod::paper_line;
+  if (no_line) options.line_precision_mid = options.line_precision_end = 0.0;
+  if (no_approach) options.final_approach = 0.0;
+  if (method == TransferMethod::no_windings)
+    options.winding_precision_mid = options.winding_precision_end = 0.0;
+  if (method == TransferMethod::nearest_point)
+    options.winding_reference = WindingReference::nearest_point;
+  return options;
+}
+
+/// Runs \p method on the human grasp \p g (a topological variant with
+/// transfer_method_options); the result's method is \p method.
 [[nodiscard]] inline RobotGrasp transfer(TransferMethod method, const GraspObject& object,
                                          const HumanGrasp& g, const TransferOptions& options) {
   switch (method) {
-    case TransferMethod::topological:
-      return transfer_topological(object, g, options);
     case TransferMethod::transplant:
       return transfer_transplant(object, g, options);
     case TransferMethod::fingertip:
       return transfer_fingertip(object, g, options);
+    default:
+      break;
   }
-  return {};
+  RobotGrasp r = transfer_topological(object, g, transfer_method_options(method, options));
+  r.method = method;
+  return r;
 }
 
 }  // namespace topograsp

@@ -311,9 +311,7 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
     cli.experiment.objects.push_back(std::move(*o));
   }
   std::vector<std::string> method_names;
-  for (const TransferMethod m :
-       {TransferMethod::topological, TransferMethod::transplant, TransferMethod::fingertip})
-    method_names.emplace_back(to_string(m));
+  for (const TransferMethod m : all_transfer_methods) method_names.emplace_back(to_string(m));
   for (const std::string_view name :
        detail::split_cli_list(methods_list, "--methods", method_names, "method"))
     cli.experiment.methods.push_back(transfer_method(name));
@@ -332,7 +330,9 @@ simulation, as in "Topological Synergies for Grasp Transfer" (Table I).
 options:
   --objects LIST   comma-separated objects, each once (default hammer,bottle; also mug, box,
                    ball, can)
-  --methods LIST   comma-separated methods, each once (default topological,transplant,fingertip)
+  --methods LIST   comma-separated methods, each once (default topological,transplant,fingertip;
+                   also the topological method's variants paper, paper_line, paper_approach,
+                   no_windings, nearest_point: docs/transfer.md)
   --out DIR        the output folder (default grasp_transfer_out; see below)
   --force          write into DIR even if it is not empty and holds no earlier run
   --jobs N         worker threads, 1 to 1024 (default 1); if fewer threads can be started, the
