@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <exception>
+#include <filesystem>
 #include <string>
 #include <string_view>
 #include <typeinfo>
@@ -69,6 +70,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 input);
     }
     if (cli.help) return;
+    if (cli.merge) {  // merge: the shards' folders, each named, and nothing of a run
+      if (cli.shards.empty()) fuzz_fail("command_line", "merge accepted without a shard", input);
+      for (const std::filesystem::path& shard : cli.shards)
+        if (shard.empty()) fuzz_fail("command_line", "merge accepted an empty shard name", input);
+      return;
+    }
     const topograsp::ExperimentOptions& x = cli.experiment;
     if (x.objects.empty() || x.methods.empty())
       fuzz_fail("command_line", "accepted with no object or no method", input);
