@@ -43,12 +43,15 @@ std::string percent(const Json& stable, const Json& tested, const Json& interval
   return buf;
 }
 
-// The paper's Table I next to ours, one column per object, from results.json's summaries; with a
-// second judge its rates too; then each method against the topological one on the same grasps
-// (McNemar's exact test).
+// The paper's Table I next to ours, one column per object (and one over all objects), from
+// results.json's summaries; with a second judge its rates too; then each method against the
+// topological one on the same grasps (McNemar's exact test).
 void print_table(const Json& doc) {
   const Json& config = doc.at("config");
-  const Json::Array& objects = doc.at("objects").as_array();
+  // One column per object, then one over every object when there are several.
+  std::vector<const Json*> objects;
+  for (const Json& o : doc.at("objects").as_array()) objects.push_back(&o);
+  if (objects.size() > 1 && doc.contains("overall")) objects.push_back(&doc.at("overall"));
   const auto paper = [](const std::string& object, int row) -> std::string {
     // Table I of the paper: hammer, bottle; rows: grasps, stable, autoclose, topological.
     if (object == "hammer")
@@ -58,24 +61,26 @@ void print_table(const Json& doc) {
     return "-";
   };
   const auto label = [](const std::string& m) -> std::string {
-    return m == "transplant"       ? "Autoclose (transplant)"
-           : m == "topological"    ? "Topological synergies"
-           : m == "fingertip"      ? "Fingertip mapping"
-           : m == "paper"          ? "Topological, as in the paper"
-           : m == "paper_line"     ? "  paper + line task"
-           : m == "paper_approach" ? "  paper + final approach"
-           : m == "no_windings"    ? "  topological, no windings"
-           : m == "nearest_point"  ? "  topological, nearest point"
-                                   : m;
+    return m == "transplant"        ? "Autoclose (transplant)"
+           : m == "topological"     ? "Topological synergies"
+           : m == "fingertip"       ? "Fingertip mapping"
+           : m == "virtual_finger"  ? "Virtual-finger mapping"
+           : m == "paper"           ? "Topological, as in the paper"
+           : m == "paper_line"      ? "  paper + line task"
+           : m == "paper_approach"  ? "  paper + final approach"
+           : m == "no_windings"     ? "  topological, no windings"
+           : m == "nearest_point"   ? "  topological, nearest point"
+           : m == "closed_windings" ? "  topological, closed windings"
+                                    : m;
   };
   const auto header = [&](const std::string& title) {
     std::printf("\n%-44s", title.c_str());
-    for (const Json& o : objects) std::printf(" %26s", o.at("name").as_string().c_str());
+    for (const Json* o : objects) std::printf(" %26s", o->at("name").as_string().c_str());
     std::printf("\n");
   };
   const auto row = [&](const std::string& text, const auto& cell) {
     std::printf("%-44s", text.c_str());
-    for (const Json& o : objects) std::printf(" %26s", cell(o).c_str());
+    for (const Json* o : objects) std::printf(" %26s", cell(*o).c_str());
     std::printf("\n");
   };
   const std::string judge = config.at("judge").as_string();

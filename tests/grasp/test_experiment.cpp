@@ -123,6 +123,35 @@ TEST_CASE("a small experiment: counts, schema and determinism", "[grasp][experim
       for (const HumanGrasp& g : results[i].human) expected_grasps += g.reached ? 1 : 0;
       expected_grasps += 3 * static_cast<std::size_t>(results[i].stable_human());
     }
+    // Over all objects: the counts add up, the intervals and paired tests are of the sums.
+    const Json& overall = doc.at("overall");
+    CHECK(overall.at("name").as_string() == "all objects");
+    CHECK(overall.at("hypotheses").as_number() ==
+          objects[0].at("hypotheses").as_number() + objects[1].at("hypotheses").as_number());
+    CHECK(overall.at("stable_human").as_number() ==
+          results[0].stable_human() + results[1].stable_human());
+    for (const char* m : {"topological", "transplant", "fingertip"}) {
+      const auto sum = [&](const char* field) {
+        return objects[0].at("methods").at(m).at(field).as_number() +
+               objects[1].at("methods").at(m).at(field).as_number();
+      };
+      const Json& s = overall.at("methods").at(m);
+      CHECK(s.at("tested").as_number() == sum("tested"));
+      CHECK(s.at("stable").as_number() == sum("stable"));
+      const RateInterval w =
+          wilson_interval(static_cast<int>(sum("stable")), static_cast<int>(sum("tested")));
+      CHECK(s.at("interval").as_array()[0].as_number() == Approx(w.lower));
+      CHECK(s.at("interval").as_array()[1].as_number() == Approx(w.upper));
+      if (std::string(m) == "topological") continue;
+      const auto pairs = [&](const char* field) {
+        return static_cast<int>(objects[0].at("methods").at(m).at("paired").at(field).as_number() +
+                                objects[1].at("methods").at(m).at("paired").at(field).as_number());
+      };
+      CHECK(s.at("paired").at("only_this").as_number() == pairs("only_this"));
+      CHECK(s.at("paired").at("only_against").as_number() == pairs("only_against"));
+      CHECK(s.at("paired").at("p_value").as_number() ==
+            Approx(mcnemar_exact_p(pairs("only_this"), pairs("only_against"))));
+    }
     const auto& grasps = doc.at("grasps").as_array();
     CHECK(grasps.size() == expected_grasps);
     // Paired: the demonstration and every method's transfer of it meet the same shakes.

@@ -14,12 +14,13 @@ TEST_CASE("every transfer method is found by its name, and no other name",
   for (const TransferMethod m : all_transfer_methods) {
     INFO(to_string(m));
     CHECK(transfer_method(to_string(m)) == m);
-    CHECK(is_topological(m) == (m != TransferMethod::transplant && m != TransferMethod::fingertip));
+    CHECK(is_topological(m) == (m != TransferMethod::transplant && m != TransferMethod::fingertip &&
+                                m != TransferMethod::virtual_finger));
   }
   CHECK_THROWS_WITH(transfer_method("papers"),
                     Catch::StartsWith("method: unknown method \"papers\" (expected topological, "
-                                      "transplant, fingertip, paper,") &&
-                        Catch::EndsWith("no_windings or nearest_point)"));
+                                      "transplant, fingertip, virtual_finger, paper,") &&
+                        Catch::EndsWith("nearest_point or closed_windings)"));
 }
 
 TEST_CASE("each variant switches exactly its parts of the topological method",
@@ -37,9 +38,10 @@ TEST_CASE("each variant switches exactly its parts of the topological method",
   const auto windings_on = [](const TransferOptions& o) {
     return o.winding_precision_mid > 0.0 && o.winding_precision_end > 0.0;
   };
-  for (const TransferMethod m :
-       {TransferMethod::topological, TransferMethod::transplant, TransferMethod::fingertip}) {
+  for (const TransferMethod m : {TransferMethod::topological, TransferMethod::transplant,
+                                 TransferMethod::fingertip, TransferMethod::virtual_finger}) {
     const TransferOptions o = transfer_method_options(m, given);
+    CHECK(o.closing_corrections == 0);
     check_kept(o);
     CHECK(line_on(o));
     CHECK(o.final_approach == given.final_approach);
@@ -67,6 +69,11 @@ TEST_CASE("each variant switches exactly its parts of the topological method",
   const TransferOptions nearest = transfer_method_options(TransferMethod::nearest_point, given);
   CHECK(nearest.winding_reference == WindingReference::nearest_point);
   CHECK(windings_on(nearest));
+  const TransferOptions closed = transfer_method_options(TransferMethod::closed_windings, given);
+  check_kept(closed);
+  CHECK(closed.closing_corrections == 2);
+  CHECK(line_on(closed));
+  CHECK(windings_on(closed));
 }
 
 TEST_CASE("a variant runs the topological planner with its options and says which it was",

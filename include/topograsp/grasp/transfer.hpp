@@ -2,10 +2,13 @@
 /// \file
 /// The transfer methods: a stable human grasp to the Schunk SDH, by topological synergies (the
 /// paper: AICO on the 14-DOF arm + SDH with the human's two largest windings as targets), by the
-/// paper's baseline "transplant" (the SDH at the human palm's pose, fingers closed), and by
-/// fingertip mapping (Rohling and Hollerbach 1993: the SDH's fingertips fitted to the human's
-/// thumb, index and middle tips by least squares). Each result is closed until contact and
-/// judged by the stability suite, the hand without the arm.
+/// paper's baseline "transplant" (the SDH at the human palm's pose, fingers closed), by
+/// fingertip mapping (Rohling and Hollerbach 1993: the SDH's fingertips fitted by least squares to
+/// the human's thumb, index and ring tips, scaled and put on the object's surface) and by a
+/// virtual-finger mapping (Arbib, Iberall and Lyons 1985: the SDH's thumb opposes its two fingers
+/// along the axis and across the width of the human thumb's opposition to the other four digits).
+/// Each result is closed until contact and judged by the stability suite, the hand without the
+/// arm.
 #pragma once
 
 #include <algorithm>
@@ -69,7 +72,10 @@ enum class WindingReference : std::uint8_t {
 /// - paper_approach: the paper's method plus the final approach until contact only;
 /// - no_windings: topograsp's method without the winding targets (the same plan otherwise);
 /// - nearest_point: topograsp's method with the windings taken around the object's point nearest
-///   the human's grasp centre.
+///   the human's grasp centre;
+/// - closed_windings: topograsp's method with the winding targets corrected for the closing
+///   (TransferOptions::closing_corrections = 2), so that the windings after the fingers close,
+///   not before, are the human's.
 enum class TransferMethod : std::uint8_t {
   topological,
   transplant,
@@ -78,17 +84,20 @@ enum class TransferMethod : std::uint8_t {
   paper_line,
   paper_approach,
   no_windings,
-  nearest_point
+  nearest_point,
+  virtual_finger,
+  closed_windings
 };
 
 /// Every transfer method, in the order --help lists them.
-inline constexpr std::array<TransferMethod, 8> all_transfer_methods{
-    TransferMethod::topological, TransferMethod::transplant,   TransferMethod::fingertip,
-    TransferMethod::paper,       TransferMethod::paper_line,   TransferMethod::paper_approach,
-    TransferMethod::no_windings, TransferMethod::nearest_point};
+inline constexpr std::array<TransferMethod, 10> all_transfer_methods{
+    TransferMethod::topological,    TransferMethod::transplant,  TransferMethod::fingertip,
+    TransferMethod::virtual_finger, TransferMethod::paper,       TransferMethod::paper_line,
+    TransferMethod::paper_approach, TransferMethod::no_windings, TransferMethod::nearest_point,
+    TransferMethod::closed_windings};
 
-/// The name of \p m ("topological", "transplant", "fingertip", "paper", "paper_line",
-/// "paper_approach", "no_windings", "nearest_point").
+/// The name of \p m ("topological", "transplant", "fingertip", "virtual_finger", "paper",
+/// "paper_line", "paper_approach", "no_windings", "nearest_point", "closed_windings").
 [[nodiscard]] constexpr std::string_view to_string(TransferMethod m) noexcept {
   switch (m) {
     case TransferMethod::topological:
@@ -107,13 +116,18 @@ inline constexpr std::array<TransferMethod, 8> all_transfer_methods{
       return "no_windings";
     case TransferMethod::nearest_point:
       return "nearest_point";
+    case TransferMethod::virtual_finger:
+      return "virtual_finger";
+    case TransferMethod::closed_windings:
+      return "closed_windings";
   }
   return "unknown";
 }
 
 /// Whether \p m is the topological method or one of its named variants (transfer_topological).
 [[nodiscard]] constexpr bool is_topological(TransferMethod m) noexcept {
-  return m != TransferMethod::transplant && m != TransferMethod::fingertip;
+  return m != TransferMethod::transplant && m != TransferMethod::fingertip &&
+         m != TransferMethod::virtual_finger;
 }
 
 /// The method called \p name (to_string of one of all_transfer_methods).
@@ -167,14 +181,24 @@ struct TransferOptions {
   /// After the plan, the hand moves on along its approach until it touches the object, at most
   /// this far (m), before the fingers close, as the demonstrations approach until contact.
   double final_approach = 0.25;
+  /// Closing corrections of the topological method (0 = none): after the plan the placed hand is
+  /// closed, the windings it closes to correct the targets (target += human's - closed) and the
+  /// plan is made again, this many times; the plan whose closed windings are nearest the human's
+  /// is kept. Each costs a plan and a closing.
+  int closing_corrections = 0;
   /// Least-squares iterations of the fingertip mapping.
   int fingertip_iterations = 100;
   /// Weight of the fingertip fit's pull toward the transplant pose and the pre-shape, per m^2 or
   /// rad^2, against the tip errors in m^2 (1e-4: 1 rad weighs as 1 cm, so the tips are reached).
   double fingertip_prior = 1e-4;
-  /// Scale of the human's three tip positions about their centroid before the fit (the robot's
-  /// size over the human's); 0 = the SDH/human ratio of the mapped digits' lengths (about 2.17).
+  /// Scale of the human's three tip positions about their centroid before they are put on the
+  /// object's surface (the robot's size over the human's); 0 = the SDH/human ratio of the mapped
+  /// digits' lengths (about 2.17).
   double fingertip_scale = 0.0;
+  /// The virtual-finger mapping opens the SDH until its thumb tip and the midpoint of its finger
+  /// tips lie this much farther apart than the human thumb tip and the centroid of the other four
+  /// (m): room for the SDH's phalanx (1.4 cm radius) and a clearance, 2 cm on each side.
+  double virtual_finger_margin = 0.04;
   /// How far the transplant baseline opens the SDH before it is placed (rad): its proximal
   /// joints at -opening, its distal joints at +opening (the tips kept pointing inward), the
   /// knuckle as in sdh_preshape (transplant_preshape). Default 0.7, the best of a sweep over
@@ -196,7 +220,7 @@ struct TransferParameter {
 /// The numeric parameters of TransferOptions (grasp_transfer --set NAME=VALUE; the "transfer"
 /// object of results.json), each with the range set_transfer_parameter accepts. Lengths are in
 /// m, precisions are task weights (per m^2 for the line task); 0 switches a task's term off.
-inline constexpr std::array<TransferParameter, 14> transfer_parameters{{
+inline constexpr std::array<TransferParameter, 15> transfer_parameters{{
     {"backoff", &TransferOptions::backoff, 0.0, 0.3,
      "m: the human grasp centre's start beyond the SDH's, along the approach"},
     {"winding_precision_mid", &TransferOptions::winding_precision_mid, 0.0, 1e6,
@@ -223,6 +247,8 @@ inline constexpr std::array<TransferParameter, 14> transfer_parameters{{
      "the human tips' scale; 0 derives it (2.175)"},
     {"transplant_opening", &TransferOptions::transplant_opening, 0.0, 1.5,
      "rad: how far the transplant opens the SDH's fingers"},
+    {"virtual_finger_margin", &TransferOptions::virtual_finger_margin, 0.0, 0.2,
+     "m: the virtual-finger SDH's aperture beyond the human's"},
 }};
 
 /// The entry of transfer_parameters called \p name, or nullptr.
@@ -374,6 +400,20 @@ inline Vec2 sdh_windings(const Vec3& p, const Eigen::Isometry3d& root, const Vec
   return WindingTask<s>(Vec3(root.inverse() * p)).value(d);
 }
 
+// The point of \p shape's surface nearest \p p (point_a, object frame), the outward normal there
+// (normal) and p's signed distance (distance, negative inside): the contact of the part in which
+// p lies deepest, or of the nearest part if p is outside them all.
+inline Contact nearest_surface(const Composite& shape, const Vec3& p) {
+  const Primitive probe = Primitive::sphere(p, 1e-6);
+  Contact nearest;
+  nearest.distance = std::numeric_limits<double>::infinity();
+  for (const Primitive& part : shape.parts()) {
+    const Contact k = signed_distance(part, probe);
+    if (k.distance < nearest.distance) nearest = k;
+  }
+  return nearest;
+}
+
 }  // namespace detail
 
 namespace detail {
@@ -395,6 +435,15 @@ namespace detail {
   return problem.empty() ? problem : "the hand pose cannot be simulated (" + problem + ")";
 }
 
+// The scene of the SDH at root (object frame) with joints q_open on the object.
+inline HandScene<models::schunk_sdh> sdh_scene(const GraspObject& object,
+                                               const Eigen::Isometry3d& root, const Vec<7>& q_open,
+                                               const TransferOptions& options) {
+  return HandScene<models::schunk_sdh>(
+      root, clamp_to_limits<models::schunk_sdh>(q_open),
+      object_spec(object, HandSurface::sdh_pad, options.sim.friction), options.sim.scene);
+}
+
 }  // namespace detail
 
 /// Closes the SDH at \p root (its palm in the object frame) with joints \p q_open on the object,
@@ -403,9 +452,7 @@ namespace detail {
 inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3d& root,
                                const Vec<7>& q_open, const TransferOptions& options,
                                RobotGrasp& r) {
-  HandScene<models::schunk_sdh> scene(
-      root, clamp_to_limits<models::schunk_sdh>(q_open),
-      object_spec(object, HandSurface::sdh_pad, options.sim.friction), options.sim.scene);
+  auto scene = detail::sdh_scene(object, root, q_open, options);
   const auto closed = close_hand(scene, options.sim.close);
   r.hand_pose = root;
   r.q_open = q_open;
@@ -448,9 +495,63 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
   return std::nullopt;
 }
 
-/// The paper's baseline: the SDH at the human hand's pose (its grasp centre at the human's, its
-/// approach along the human's), backed off only as far as needed to clear the object, then the
-/// fingers closed until contact.
+/// \p q_hand opened until the SDH at \p root (its palm, object frame) is sim.contact_gap clear of
+/// the object: its proximal joints (fingers and thumb) lowered and its distal joints raised by
+/// 0.05 rad a step, each within its limits, until the hand is clear or fully open; the knuckle is
+/// kept. A hand opens around an object before it closes on it; backing it off instead can take
+/// the object out of its reach. \p q_hand itself if it is clear.
+[[nodiscard]] inline Vec<7> open_until_clear(const GraspObject& object,
+                                             const Eigen::Isometry3d& root, Vec<7> q_hand,
+                                             const GraspSimOptions& sim) {
+  constexpr auto& f = models::schunk_sdh_free;
+  constexpr auto& s = models::schunk_sdh;
+  const Composite shape = object.composite();
+  const Vec<7> lo = lower_limits<s>(), hi = upper_limits<s>();
+  KinematicsData<f> d;
+  for (;;) {
+    forward_kinematics(
+        d, place_frame<f>(root * Eigen::Translation3d(0, 0, models::sdh_dims::base_height),
+                          f.frame("palm_centre"), q_hand));
+    if (hand_object_distance(d, shape) >= sim.contact_gap) return q_hand;
+    Vec<7> opened = q_hand;
+    for (const int i : {1, 3, 5}) {
+      opened[i] = std::max(lo[i], q_hand[i] - 0.05);
+      opened[i + 1] = std::min(hi[i + 1], q_hand[i + 1] + 0.05);
+    }
+    if (opened == q_hand) return q_hand;  // fully open
+    q_hand = opened;
+  }
+}
+
+namespace detail {
+
+// The baselines' last steps: q opened until the SDH at root (object frame) is clear of the object
+// (open_until_clear), moved on along its approach until contact (at most final_approach) or backed
+// off if it still overlaps (place_at_contact), then closed and judged into r (planned; r.reason
+// kept) with r.plan_ms the time since t0. If it cannot be placed nothing is simulated and
+// r.reason says why.
+inline void open_place_and_simulate(const GraspObject& object, const Eigen::Isometry3d& root,
+                                    const Vec<7>& q, const TransferOptions& options,
+                                    Clock::time_point t0, RobotGrasp& r) {
+  const Vec<7> opened = open_until_clear(object, root, q, options.sim);
+  const auto placed = place_at_contact(object, root, opened, root.linear().col(2), options.sim,
+                                       options.final_approach);
+  r.plan_ms = ms_since(t0);
+  if (!placed) {
+    r.reason = "the hand cannot be placed clear of the object";
+    return;
+  }
+  const std::string unusable = unusable_sdh_pose(*placed, opened);
+  if (!unusable.empty()) {
+    r.reason = unusable;
+    return;
+  }
+  r.planned = true;
+  simulate_sdh_grasp(object, *placed, opened, options, r);
+}
+
+}  // namespace detail
+
 /// The SDH's joints of the transplant baseline before closing: sdh_preshape's knuckle, the
 /// proximal joints of the fingers and the thumb at -options.transplant_opening, the distal ones at
 /// +options.transplant_opening.
@@ -463,6 +564,11 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
   return q;
 }
 
+/// The paper's baseline: the SDH at the human hand's pose (its grasp centre at the human's, its
+/// approach along the human's), opened to transplant_preshape, backed off only as far as needed to
+/// clear the object, then the fingers closed until contact. It is not moved on until contact when
+/// it is clear, as the topological method is: that costs it 4 of the 20 bottle grasps of seed 1
+/// (docs/results.md), and a baseline is not given a help that weakens it.
 [[nodiscard]] inline RobotGrasp transfer_transplant(const GraspObject& object, const HumanGrasp& g,
                                                     const TransferOptions& options = {}) {
   const auto t0 = detail::Clock::now();
@@ -491,12 +597,44 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
 /// A larger error means the targets were out of the hand's reach, and the fit failed.
 inline constexpr double k_fingertip_max_error = 0.5;
 
+/// The targets of the fingertip mapping for the SDH's thumb tip, finger 1 tip and finger 2 tip
+/// (object frame): the human's thumb, index and ring tips of \p g scaled about their centroid by
+/// options.fingertip_scale (0: the SDH/human ratio of the digits' lengths; the SDH's digits are
+/// about twice as long), then each moved to the nearest point of the object's surface and out
+/// along its normal by the SDH's phalanx radius and options.sim.contact_gap, so that the fitted
+/// tips touch the object, not the air. A scaled tip farther than k_fingertip_max_error from the
+/// centroid (a scale far beyond any hand's, or one that overflows) is left where it is, for the
+/// fit to refuse.
+[[nodiscard]] inline std::array<Vec3, 3> fingertip_targets(const GraspObject& object,
+                                                           const HumanGrasp& g,
+                                                           const TransferOptions& options = {}) {
+  constexpr auto& h = models::human_hand;
+  KinematicsData<h> hd;
+  forward_kinematics(hd, g.q);
+  std::array<Vec3, 3> goal{g.hand_pose * hd.frame_p[h.frame("thumb_tip")],
+                           g.hand_pose * hd.frame_p[h.frame("index_tip")],
+                           g.hand_pose * hd.frame_p[h.frame("ring_tip")]};
+  const double scale =
+      options.fingertip_scale > 0.0 ? options.fingertip_scale : detail::sdh_human_scale();
+  const Vec3 centroid = (goal[0] + goal[1] + goal[2]) / 3.0;
+  const Composite shape = object.composite();  // parts() views it: keep it alive
+  for (Vec3& p : goal) {
+    p = centroid + scale * (p - centroid);
+    if (!p.allFinite() || (p - centroid).norm() > k_fingertip_max_error) continue;
+    const Contact k = detail::nearest_surface(shape, p);
+    p = k.point_a + (models::sdh_dims::phalanx_radius + options.sim.contact_gap) * k.normal;
+  }
+  return goal;
+}
+
 /// Fingertip mapping (Rohling and Hollerbach 1993): the human's thumb, index and ring fingertips
 /// (the ring, not the middle, because its distance to the index is nearer the SDH's finger
-/// spacing) scaled about their centroid to the SDH's size (options.fingertip_scale); the SDH on a
-/// free base fitted by damped least squares, within its joint limits, so that its thumb tip,
-/// finger 1 tip and finger 2 tip lie on them, started from the transplant pose with a weak pull
-/// toward it (options.fingertip_prior); then cleared of the object and closed until contact.
+/// spacing) scaled to the SDH's size and put on the object's surface (fingertip_targets); the SDH
+/// on a free base fitted by damped least squares,
+/// within its joint limits, so that its thumb tip, finger 1 tip and finger 2 tip lie on them,
+/// started from the transplant pose with a weak pull toward it (options.fingertip_prior); then
+/// opened until clear of the object (open_until_clear), backed off along its approach only if it
+/// still overlaps, or moved on until contact (at most final_approach), and closed until contact.
 ///
 /// When the fit cannot be done the result is not planned (RobotGrasp::planned false, nothing
 /// simulated) and RobotGrasp::reason says why: a non-finite human grasp, a fit whose cost is not
@@ -513,18 +651,9 @@ inline constexpr double k_fingertip_max_error = 0.5;
   r.reason = detail::unusable_human_grasp(g);
   if (!r.reason.empty()) return r;
   constexpr auto& f = models::schunk_sdh_free;
-  constexpr auto& h = models::human_hand;
-  KinematicsData<h> hd;
-  forward_kinematics(hd, g.q);
-  std::array<Vec3, 3> goal{g.hand_pose * hd.frame_p[h.frame("thumb_tip")],
-                           g.hand_pose * hd.frame_p[h.frame("index_tip")],
-                           g.hand_pose * hd.frame_p[h.frame("ring_tip")]};
-  // Scaled fingertip mapping: the human tips scaled about their centroid to the SDH's size (its
-  // digits are about twice as long, and the human tips lie on, even inside, the object).
+  const std::array<Vec3, 3> goal = fingertip_targets(object, g, options);
   const double scale =
       options.fingertip_scale > 0.0 ? options.fingertip_scale : detail::sdh_human_scale();
-  const Vec3 centroid = (goal[0] + goal[1] + goal[2]) / 3.0;
-  for (Vec3& p : goal) p = centroid + scale * (p - centroid);
   const std::array<int, 3> tips{f.frame("thumb_tip"), f.frame("tip_1"), f.frame("tip_2")};
   const Eigen::Isometry3d target = detail::sdh_grasp_target(g);
   Vec<13> q = place_frame<f>(target, f.frame("grasp_centre"), options.sdh_preshape);
@@ -600,23 +729,128 @@ inline constexpr double k_fingertip_max_error = 0.5;
     return r;
   }
   const Eigen::Isometry3d fitted = link_pose(d, f.link("palm"));
-  const Vec<7> q_hand = q.tail<7>();
-  r.reason = detail::unusable_sdh_pose(fitted, q_hand);
+  r.reason = detail::unusable_sdh_pose(fitted, q.tail<7>());
   if (!r.reason.empty()) {
     r.plan_ms = detail::ms_since(t0);
     r.reason = "fitted: " + r.reason;
     return r;
   }
-  const auto root = place_at_contact(object, fitted, q_hand, fitted.linear().col(2), options.sim);
-  r.plan_ms = detail::ms_since(t0);
-  if (!root) {
-    r.reason = "the fitted hand cannot be placed clear of the object";
+  detail::open_place_and_simulate(object, fitted, q.tail<7>(), options, t0, r);
+  return r;
+}
+
+namespace detail {
+
+// The SDH's opposition at joints q (its palm frame): its thumb tip (the first virtual finger) and
+// the midpoint of its two finger tips (the second).
+inline std::pair<Vec3, Vec3> sdh_opposition(const Vec<7>& q) {
+  constexpr auto& s = models::schunk_sdh;
+  KinematicsData<s> d;
+  forward_kinematics(d, q);
+  return {d.frame_p[static_cast<std::size_t>(s.frame("thumb_tip"))],
+          0.5 * (d.frame_p[static_cast<std::size_t>(s.frame("tip_1"))] +
+                 d.frame_p[static_cast<std::size_t>(s.frame("tip_2"))])};
+}
+
+// The length (m) of the object's chord along the line c + s u (u unit): the inside interval of
+// samples each millimetre for |s| <= 0.3 m that contains c or, if c is outside, lies nearest it;
+// 0 if the line misses the object.
+inline double chord_length(const Composite& shape, const Vec3& c, const Vec3& u) {
+  constexpr int n = 300;
+  std::array<bool, 2 * n + 1> inside{};
+  for (int i = -n; i <= n; ++i)
+    inside[static_cast<std::size_t>(i + n)] = nearest_surface(shape, c + 1e-3 * i * u).distance < 0;
+  int best = -1;  // a sample in the chosen interval
+  for (int k = 0; k <= n && best < 0; ++k)
+    for (const int i : {n + k, n - k})
+      if (inside[static_cast<std::size_t>(i)]) best = i;
+  if (best < 0) return 0.0;
+  int lo = best, hi = best;
+  while (lo > 0 && inside[static_cast<std::size_t>(lo - 1)]) --lo;
+  while (hi < 2 * n && inside[static_cast<std::size_t>(hi + 1)]) ++hi;
+  return 1e-3 * (hi - lo + 1);
+}
+
+}  // namespace detail
+
+/// The openings (rad) the virtual-finger mapping chooses among: 0 to 1.5 in steps of 0.01.
+inline constexpr int k_virtual_finger_openings = 151;
+
+/// Virtual-finger mapping (Arbib, Iberall and Lyons 1985; Iberall 1987), the power-grasp
+/// baseline. In the human grasp the four fingers act as one virtual finger (the centroid of their
+/// tips) that either the thumb opposes (pad opposition: the object lies between the thumb tip and
+/// that centroid) or the palm (palm opposition, a power wrap: the thumb tip lies beside the
+/// finger tips, on the same side of the object). The SDH's thumb tip opposes the midpoint of its
+/// two finger tips:
+/// - pad: the SDH's opposition along the human's, the midpoints together, the SDH's approach the
+///   human's made orthogonal to it; the aperture the human's (thumb tip to the fingers' centroid);
+/// - palm: the SDH placed as the transplant (its grasp centre at the human's, its approach the
+///   palm's, thumb to fingers along the human's fingers); the aperture the object's chord along
+///   that axis through the human's grasp centre (chord_length).
+/// The SDH is opened as transplant_preshape at the opening (0 to 1.5 rad) whose aperture (thumb
+/// tip to the midpoint of the finger tips) is nearest that aperture plus
+/// options.virtual_finger_margin (the pre-shape rule, stated before any run); then opened until
+/// clear of the object (open_until_clear), backed off along its approach only if it still
+/// overlaps, or moved on until contact (at most final_approach), and closed until contact.
+///
+/// Not planned (RobotGrasp::planned false, reason says why) for a non-finite human grasp, a pad
+/// opposition shorter than 1 mm or along the human's approach (no axis to turn the SDH by), or a
+/// hand that cannot be placed clear of the object.
+[[nodiscard]] inline RobotGrasp transfer_virtual_finger(const GraspObject& object,
+                                                        const HumanGrasp& g,
+                                                        const TransferOptions& options = {}) {
+  const auto t0 = detail::Clock::now();
+  RobotGrasp r;
+  r.method = TransferMethod::virtual_finger;
+  r.reason = detail::unusable_human_grasp(g);
+  if (!r.reason.empty()) return r;
+  constexpr auto& h = models::human_hand;
+  KinematicsData<h> hd;
+  forward_kinematics(hd, g.q);
+  const auto at = [&](int frame) {
+    return Vec3(g.hand_pose * hd.frame_p[static_cast<std::size_t>(frame)]);
+  };
+  const Vec3 thumb_h = at(h.frame("thumb_tip"));
+  const Vec3 fingers_h = 0.25 * (at(h.frame("index_tip")) + at(h.frame("middle_tip")) +
+                                 at(h.frame("ring_tip")) + at(h.frame("pinky_tip")));
+  const Composite shape = object.composite();  // parts() views it: keep it alive
+  bool pad = false;  // the object lies between the thumb tip and the fingers' centroid
+  for (int i = 1; i < 100 && !pad; ++i)
+    pad = detail::nearest_surface(shape, thumb_h + 0.01 * i * (fingers_h - thumb_h)).distance < 0;
+  const Eigen::Isometry3d target = detail::sdh_grasp_target(g);
+  const Vec3 approach = target.linear().col(2);
+  const Vec3 opposition = pad ? Vec3(fingers_h - thumb_h) : Vec3(target.linear().col(0));
+  const double aperture =
+      pad ? opposition.norm() : detail::chord_length(shape, target.translation(), opposition);
+  if (pad && (!(aperture >= 1e-3) || opposition.cross(approach).norm() < 1e-3 * aperture)) {
+    r.plan_ms = detail::ms_since(t0);
+    r.reason = "the human's opposition is too short or along its approach";
     return r;
   }
-  r.reason = detail::unusable_sdh_pose(*root, q_hand);
-  if (!r.reason.empty()) return r;
-  r.planned = true;
-  simulate_sdh_grasp(object, *root, q_hand, options, r);
+  // The opening whose aperture is nearest the goal.
+  const double goal = aperture + options.virtual_finger_margin;
+  Vec<7> preshape = options.sdh_preshape;
+  double best = std::numeric_limits<double>::infinity();
+  TransferOptions opened = options;
+  for (int i = 0; i < k_virtual_finger_openings; ++i) {
+    opened.transplant_opening = 0.01 * i;
+    const Vec<7> q = transplant_preshape(opened);
+    const auto [thumb, fingers] = detail::sdh_opposition(q);
+    const double error = std::abs((fingers - thumb).norm() - goal);
+    if (error < best) {
+      best = error;
+      preshape = q;
+    }
+  }
+  Eigen::Isometry3d root = detail::sdh_root_for_grasp_centre(target);
+  if (pad) {  // the SDH's opposition along the human's, the midpoints together
+    const auto [thumb, fingers] = detail::sdh_opposition(preshape);
+    root.linear() = palm_rotation(HandAxes{(fingers - thumb).normalized(), Vec3::UnitZ()},
+                                  opposition, approach);
+    root.translation() = 0.5 * (thumb_h + fingers_h) - root.linear() * (0.5 * (thumb + fingers));
+  }
+  r.reason = pad ? "pad opposition" : "palm opposition";
+  detail::open_place_and_simulate(object, root, preshape, options, t0, r);
   return r;
 }
 
@@ -627,14 +861,7 @@ inline constexpr double k_fingertip_max_error = 0.5;
                                                   WindingReference reference) {
   if (reference == WindingReference::centre_of_mass) return object.centre_of_mass();
   const Vec3 c = detail::sdh_grasp_target(g).translation();  // the human's grasp centre
-  const Primitive probe = Primitive::sphere(c, 1e-6);
-  Contact nearest;
-  nearest.distance = std::numeric_limits<double>::infinity();
-  const Composite shape = object.composite();  // parts() views it: keep it alive
-  for (const Primitive& part : shape.parts()) {
-    const Contact k = signed_distance(part, probe);
-    if (k.distance < nearest.distance) nearest = k;
-  }
+  const Contact nearest = detail::nearest_surface(object.composite(), c);
   return nearest.distance > 0.0 ? nearest.point_a : c;
 }
 
@@ -712,49 +939,86 @@ using TopologicalTaskSet =
   const Vec2 y = options.winding_reference == WindingReference::centre_of_mass
                      ? g.descriptor.values
                      : human_descriptor(g, reference).values;
-  AicoProblem<M, TopologicalTaskSet> problem(
-      topological_tasks(object, T_world_object, y, reference, human_centre.translation(), approach,
-                        d, options),
-      q0, options.aico);
-  AicoWorkspace ws(problem);
-  const AicoResult<M.nq> plan = solve(problem, ws);
+  // One plan toward the winding targets `target`: fills r's plan records, and its hand_pose and
+  // q_open with the placed hand; false (r.reason says why) if it cannot be placed.
+  const auto plan_for = [&](const Vec2& target, RobotGrasp& out) {
+    AicoProblem<M, TopologicalTaskSet> problem(
+        topological_tasks(object, T_world_object, target, reference, human_centre.translation(),
+                          approach, d, options),
+        q0, options.aico);
+    AicoWorkspace ws(problem);
+    const AicoResult<M.nq> plan = solve(problem, ws);
+    out.sweeps = plan.sweeps;
+    out.reason = std::string(to_string(plan.termination));
+    out.sweep_log = plan.sweep_log;
+    out.winding_plan.clear();
+    out.winding_targets.clear();
+    const auto& windings = problem.stack().template get<0>();
+    KinematicsData<M> dt;
+    for (std::size_t t = 0; t < plan.q.size(); ++t) {
+      forward_kinematics(dt, plan.q[t]);
+      out.winding_plan.push_back(windings.task.value(dt));
+      out.winding_targets.push_back(windings.target.at(static_cast<int>(t), problem.steps()));
+    }
+    // A plan that accepted no sweep (whatever ended it: non-finite values, too many rejections)
+    // is the start held still: the method did no work; report it, never the ready pose.
+    const bool moved = std::any_of(plan.sweep_log.begin(), plan.sweep_log.end(),
+                                   [](const AicoSweepRecord& s) { return s.accepted; });
+    if (!moved) {
+      out.reason = "the plan failed before any progress (" + out.reason + ")";
+      return false;
+    }
+    forward_kinematics(dt, plan.q.back());
+    const Eigen::Isometry3d root = T_world_object.inverse() * link_pose(dt, M.link("palm"));
+    const Vec<7> q_hand = clamp_to_limits<models::schunk_sdh>(plan.q.back().tail<7>());
+    const auto cleared = place_at_contact(object, root, q_hand, root.linear().col(2), options.sim,
+                                          options.final_approach);
+    if (!cleared) {
+      out.reason = "the planned hand penetrates the object";
+      return false;
+    }
+    const std::string unusable = detail::unusable_sdh_pose(*cleared, q_hand);
+    if (!unusable.empty()) {
+      out.reason = unusable;
+      return false;
+    }
+    out.hand_pose = *cleared;
+    out.q_open = q_hand;
+    return true;
+  };
+  bool placed = plan_for(y, r);
+  // Closing corrections: the windings the closing leaves, measured by closing the placed hand,
+  // correct the targets (target += y - closed windings) and the plan is made again; the plan
+  // whose closed windings come nearest y is kept.
+  if (placed && options.closing_corrections > 0) {
+    const auto closed_windings = [&](const RobotGrasp& c) {
+      auto scene = detail::sdh_scene(object, c.hand_pose, c.q_open, options);
+      return detail::sdh_windings(reference, c.hand_pose,
+                                  close_hand(scene, options.sim.close).q_closed);
+    };
+    Vec2 w = closed_windings(r);
+    double error = (w - y).norm();
+    Vec2 target = y;
+    for (int k = 0; k < options.closing_corrections; ++k) {
+      target = (target + (y - w)).cwiseMax(0.0);
+      RobotGrasp c;
+      c.method = r.method;
+      if (!plan_for(target, c)) break;
+      w = closed_windings(c);
+      if ((w - y).norm() < error) {
+        error = (w - y).norm();
+        r = std::move(c);
+      }
+    }
+  }
   r.plan_ms = detail::ms_since(t0);
-  r.sweeps = plan.sweeps;
-  r.reason = std::string(to_string(plan.termination));
-  r.sweep_log = plan.sweep_log;
-  const auto& windings = problem.stack().template get<0>();
-  for (std::size_t t = 0; t < plan.q.size(); ++t) {
-    forward_kinematics(d, plan.q[t]);
-    r.winding_plan.push_back(windings.task.value(d));
-    r.winding_targets.push_back(windings.target.at(static_cast<int>(t), problem.steps()));
-  }
-  // A plan that accepted no sweep (whatever ended it: non-finite values, too many rejections) is
-  // the start held still: the method did no work; report it, never the ready pose as its result.
-  const bool moved = std::any_of(plan.sweep_log.begin(), plan.sweep_log.end(),
-                                 [](const AicoSweepRecord& s) { return s.accepted; });
-  if (!moved) {
-    r.reason = "the plan failed before any progress (" + r.reason + ")";
-    return r;
-  }
-  const Vec<14> qT = plan.q.back();
-  forward_kinematics(d, qT);
-  const Eigen::Isometry3d root = T_world_object.inverse() * link_pose(d, M.link("palm"));
-  const Vec<7> q_hand = clamp_to_limits<models::schunk_sdh>(qT.tail<7>());
-  const auto cleared = place_at_contact(object, root, q_hand, root.linear().col(2), options.sim,
-                                        options.final_approach);
-  if (!cleared) {
-    r.reason = "the planned hand penetrates the object";
-    return r;
-  }
-  const std::string unusable = detail::unusable_sdh_pose(*cleared, q_hand);
-  if (!unusable.empty()) {
-    r.reason = unusable;
-    return r;
-  }
+  if (!placed) return r;
   r.planned = true;
-  simulate_sdh_grasp(object, *cleared, q_hand, options, r);
+  const Eigen::Isometry3d hand = r.hand_pose;
+  const Vec<7> q_open = r.q_open;
+  simulate_sdh_grasp(object, hand, q_open, options, r);
   if (options.winding_reference != WindingReference::centre_of_mass)
-    r.winding = detail::sdh_windings(reference, *cleared, r.q_closed);
+    r.winding = detail::sdh_windings(reference, hand, r.q_closed);
   return r;
 }
 
@@ -762,7 +1026,8 @@ using TopologicalTaskSet =
 /// method switches the line task and the final approach off (line_precision_mid/_end and
 /// final_approach 0), paper_line only the final approach, paper_approach only the line task;
 /// no_windings sets both winding precisions to 0; nearest_point the nearest-point winding
-/// reference. topological and the other methods take \p options as given.
+/// reference; closed_windings two closing corrections. topological and the other methods take
+/// \p options as given.
 [[nodiscard]] inline TransferOptions transfer_method_options(TransferMethod method,
                                                              TransferOptions options) {
   const bool no_line = method == TransferMethod::paper || method == TransferMethod::paper_approach;
@@ -773,6 +1038,7 @@ using TopologicalTaskSet =
     options.winding_precision_mid = options.winding_precision_end = 0.0;
   if (method == TransferMethod::nearest_point)
     options.winding_reference = WindingReference::nearest_point;
+  if (method == TransferMethod::closed_windings) options.closing_corrections = 2;
   return options;
 }
 
@@ -785,6 +1051,8 @@ using TopologicalTaskSet =
       return transfer_transplant(object, g, options);
     case TransferMethod::fingertip:
       return transfer_fingertip(object, g, options);
+    case TransferMethod::virtual_finger:
+      return transfer_virtual_finger(object, g, options);
     default:
       break;
   }

@@ -173,7 +173,7 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
     return cli;
   }
   std::string_view objects_list = "hammer,bottle";
-  std::string_view methods_list = "topological,transplant,fingertip";
+  std::string_view methods_list = "topological,transplant,fingertip,virtual_finger";
   std::vector<std::string_view> seen;  // value options given so far
   std::vector<std::string_view> set_names;
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -330,9 +330,9 @@ simulation, as in "Topological Synergies for Grasp Transfer" (Table I).
 options:
   --objects LIST   comma-separated objects, each once (default hammer,bottle; also mug, box,
                    ball, can)
-  --methods LIST   comma-separated methods, each once (default topological,transplant,fingertip;
-                   also the topological method's variants paper, paper_line, paper_approach,
-                   no_windings, nearest_point: docs/transfer.md)
+  --methods LIST   comma-separated methods, each once (default topological,transplant,fingertip,
+                   virtual_finger; also the topological method's variants paper, paper_line,
+                   paper_approach, no_windings, nearest_point, closed_windings: docs/transfer.md)
   --out DIR        the output folder (default grasp_transfer_out; see below)
   --force          write into DIR even if it is not empty and holds no earlier run
   --jobs N         worker threads, 1 to 1024 (default 1); if fewer threads can be started, the

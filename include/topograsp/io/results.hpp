@@ -357,6 +357,9 @@ inline void check_scene_names(const ExperimentOptions& options) {
 
 /// One object's part of a results.json: how many hypotheses were run and their grasp records
 /// (hypothesis_records), in any order.
+/// The name of results.json's "overall" entry: the summaries over every object's grasps.
+inline constexpr std::string_view overall_name = "all objects";
+
 struct ObjectRecords {
   std::string name;
   int hypotheses = 0;
@@ -365,7 +368,8 @@ struct ObjectRecords {
 
 /// results.json from its \p config (results_config) and each object's records: the objects in
 /// config order, each object's records sorted (the demonstrations by id, then each method of
-/// config["methods"] in turn by id), and every summary computed from the records. So shards'
+/// config["methods"] in turn by id), and every summary computed from the records, per object and
+/// over all objects ("overall": the same summaries, name overall_name). So shards'
 /// records put together give the document of the whole run (grasp_transfer merge).
 /// \throws topograsp::invalid_argument naming "grasps" if a record's method is not in the config,
 /// a (method, id) appears twice, or the methods did not transfer the same demonstrations; naming
@@ -392,7 +396,36 @@ struct ObjectRecords {
   std::sort(objects.begin(), objects.end(), [&](const ObjectRecords& a, const ObjectRecords& b) {
     return index_of(names, a.name) < index_of(names, b.name);
   });
+  const std::size_t topological = index_of(methods, "topological") + 1;
+  // The summaries of records grouped as `by` (the demonstrations, then each method in config
+  // order, each in id order within an object): stable_human, human, methods.
+  const auto summarise = [&](Json& obj, const std::vector<std::vector<const Json*>>& by) {
+    obj.set("stable_human",
+            static_cast<int>(std::count_if(by[0].begin(), by[0].end(), [](const Json* r) {
+              return detail::record_stable(*r);
+            })));
+    obj.set("human", detail::stability_summary(by[0]));
+    const bool second = std::any_of(by.begin() + 1, by.end(), [](const auto& records) {
+      return std::any_of(records.begin(), records.end(),
+                         [](const Json* r) { return !r->at("second_judge").is_null(); });
+    });
+    Json ms = Json::object();
+    for (std::size_t m = 0; m < methods.size(); ++m) {
+      Json summary = detail::stability_summary(by[m + 1]);
+      // Against the topological method on the same grasps (same shakes): McNemar's exact test.
+      const bool paired = topological <= methods.size() && m + 1 != topological;
+      summary.set("paired",
+                  paired ? detail::paired_summary(by[m + 1], by[topological], false) : Json());
+      summary.set("paired_second", paired && second
+                                       ? detail::paired_summary(by[m + 1], by[topological], true)
+                                       : Json());
+      ms.set(methods[m], summary);
+    }
+    obj.set("methods", ms);
+  };
   Json out_objects = Json::array(), grasps = Json::array();
+  std::vector<std::vector<const Json*>> all(methods.size() + 1);  // every object's, in order
+  int all_hypotheses = 0;
   for (ObjectRecords& o : objects) {
     // The sort key: (method: the demonstration first, then config order; id).
     const auto key = [&](const Json& rec) {
@@ -413,38 +446,27 @@ struct ObjectRecords {
                                                      " is given twice");
     std::vector<std::vector<const Json*>> by(methods.size() + 1);
     for (const Json& rec : o.grasps) by[key(rec).first].push_back(&rec);
+    for (std::size_t m = 0; m < by.size(); ++m)
+      all[m].insert(all[m].end(), by[m].begin(), by[m].end());
+    all_hypotheses += o.hypotheses;
     Json obj = Json::object();
     obj.set("name", o.name);
     obj.set("hypotheses", o.hypotheses);
-    obj.set("stable_human",
-            static_cast<int>(std::count_if(by[0].begin(), by[0].end(), [](const Json* r) {
-              return detail::record_stable(*r);
-            })));
-    obj.set("human", detail::stability_summary(by[0]));
-    const std::size_t topological = index_of(methods, "topological") + 1;
-    const bool second = std::any_of(o.grasps.begin(), o.grasps.end(), [](const Json& r) {
-      return r.at("method").as_string() != "human" && !r.at("second_judge").is_null();
-    });
-    Json ms = Json::object();
-    for (std::size_t m = 0; m < methods.size(); ++m) {
-      Json summary = detail::stability_summary(by[m + 1]);
-      // Against the topological method on the same grasps (same shakes): McNemar's exact test.
-      const bool paired = topological <= methods.size() && m + 1 != topological;
-      summary.set("paired",
-                  paired ? detail::paired_summary(by[m + 1], by[topological], false) : Json());
-      summary.set("paired_second", paired && second
-                                       ? detail::paired_summary(by[m + 1], by[topological], true)
-                                       : Json());
-      ms.set(methods[m], summary);
-    }
-    obj.set("methods", ms);
+    summarise(obj, by);
     out_objects.push_back(obj);
-    for (Json& rec : o.grasps) grasps.push_back(std::move(rec));
   }
+  // Every object's records together (the pairing holds object by object, in the same order).
+  Json overall = Json::object();
+  overall.set("name", std::string(overall_name));
+  overall.set("hypotheses", all_hypotheses);
+  summarise(overall, all);
+  for (ObjectRecords& o : objects)
+    for (Json& rec : o.grasps) grasps.push_back(std::move(rec));
   Json doc = Json::object();
   doc.set("generator", std::string(results_generator));
   doc.set("config", config);
   doc.set("objects", out_objects);
+  doc.set("overall", overall);
   doc.set("grasps", grasps);
   return doc;
 }
