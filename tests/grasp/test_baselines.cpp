@@ -114,9 +114,8 @@ TEST_CASE("the chord of an object along a line", "[grasp][transfer][baselines]")
 TEST_CASE("the virtual-finger mapping finds the opposition of the human grasp",
           "[grasp][transfer][baselines]") {
   const TransferOptions options;
-  // A power wrap of the hammer's handle: the thumb tip lies beside the finger tips, so the palm
-  // opposes the fingers, and the SDH is placed as the transplant with the handle's chord as its
-  // aperture.
+  // A power wrap of the hammer's handle: the palm touches it and opposes the fingers, and the SDH
+  // is placed as the transplant with the handle's chord as its aperture.
   const GraspObject hammer = objects::hammer();
   const HumanGrasp& wrap = demonstration(hammer, 47);
   REQUIRE(wrap.stable());
@@ -124,6 +123,7 @@ TEST_CASE("the virtual-finger mapping finds the opposition of the human grasp",
   CHECK(palm.planned);
   CHECK(palm.method == TransferMethod::virtual_finger);
   CHECK(palm.reason == "palm opposition");
+  CHECK_FALSE(palm.human_winding.has_value());  // a baseline aims at no winding
   const Eigen::Isometry3d target = detail::sdh_grasp_target(wrap);
   CHECK(palm.hand_pose.linear().col(2).dot(target.linear().col(2)) == Approx(1.0));
   const auto [thumb, fingers] = detail::sdh_opposition(palm.q_open);
@@ -131,19 +131,18 @@ TEST_CASE("the virtual-finger mapping finds the opposition of the human grasp",
       detail::chord_length(hammer.composite(), target.translation(), target.linear().col(0));
   // At least the chord and the margin (opened further only to clear the object).
   CHECK((fingers - thumb).norm() >= chord + options.virtual_finger_margin - 0.01);
-  // A grasp around the bottle: the bottle lies between the thumb tip and the fingers, and the
-  // SDH's thumb-to-fingers axis is turned onto the human's.
-  const GraspObject bottle = objects::bottle();
-  const HumanGrasp& around = demonstration(bottle, 0);
-  REQUIRE(around.stable());
-  const RobotGrasp pad = transfer_virtual_finger(bottle, around, options);
+  // A grasp of the hammer's head whose palm stays 15 mm off it: the thumb opposes the fingers,
+  // and the SDH's thumb-to-fingers axis is turned onto the human's.
+  const HumanGrasp& tips = demonstration(hammer, 65);
+  REQUIRE(tips.stable());
+  const RobotGrasp pad = transfer_virtual_finger(hammer, tips, options);
   CHECK(pad.planned);
   CHECK(pad.reason == "pad opposition");
   constexpr auto& h = models::human_hand;
   KinematicsData<h> hd;
-  forward_kinematics(hd, around.q);
+  forward_kinematics(hd, tips.q);
   const auto at = [&](int f) {
-    return Vec3(around.hand_pose * hd.frame_p[static_cast<std::size_t>(f)]);
+    return Vec3(tips.hand_pose * hd.frame_p[static_cast<std::size_t>(f)]);
   };
   const Vec3 human = 0.25 * (at(h.frame("index_tip")) + at(h.frame("middle_tip")) +
                              at(h.frame("ring_tip")) + at(h.frame("pinky_tip"))) -
@@ -175,6 +174,9 @@ TEST_CASE("closing corrections keep the plan whose closed windings are nearest t
   REQUIRE(corrected.planned);
   const Vec2 y = g.descriptor.values;
   CHECK((corrected.winding - y).norm() <= (plain.winding - y).norm() + 1e-12);
+  // Both record the human's windings, not the corrected targets they planned toward.
+  CHECK(plain.human_winding == y);
+  CHECK(corrected.human_winding == y);
   // The variant is the topological method with two corrections.
   CHECK(transfer_method_options(TransferMethod::closed_windings, TransferOptions{})
             .closing_corrections == 2);

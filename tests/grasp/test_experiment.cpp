@@ -171,6 +171,13 @@ TEST_CASE("a small experiment: counts, schema and determinism", "[grasp][experim
       CHECK(g.at("winding_robot").is_array());
       CHECK(g.at("plan_ms").is_number());
       CHECK(is_integer(g.at("sweeps")));
+      // What the planner said: AICO's termination for a planned topological transfer.
+      if (g.at("method").as_string() == "topological" && g.at("scene").is_string())
+        CHECK(g.at("planner").is_string());
+      else if (g.at("method").as_string() == "human")
+        CHECK_FALSE(g.contains("planner"));
+      else
+        CHECK((g.at("planner").is_null() || g.at("planner").is_string()));
       // Every test's record when the grasp was simulated; stable iff all but the hard shake
       // passed, and then the reason is empty.
       const auto& tests = g.at("tests").as_array();

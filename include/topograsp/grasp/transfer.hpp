@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -315,6 +316,10 @@ struct RobotGrasp {
   /// w of the SDH's two curves after closing, around the centre of mass (topological: around
   /// its winding reference).
   Vec2 winding = Vec2::Zero();
+  /// The human's windings the method aimed at, around the same point as `winding`: the human's
+  /// descriptor (topological: around its winding reference; never the corrected targets of
+  /// closing_corrections). Unset for the baselines, which aim at no winding.
+  std::optional<Vec2> human_winding;
   double plan_ms = 0.0;  ///< time of the method's own planning (ms)
   int sweeps = 0;        ///< AICO sweeps (topological only)
   /// Topological only: the windings of the SDH's curves at each step of the plan and their
@@ -778,10 +783,10 @@ inline constexpr int k_virtual_finger_openings = 151;
 
 /// Virtual-finger mapping (Arbib, Iberall and Lyons 1985; Iberall 1987), the power-grasp
 /// baseline. In the human grasp the four fingers act as one virtual finger (the centroid of their
-/// tips) that either the thumb opposes (pad opposition: the object lies between the thumb tip and
-/// that centroid) or the palm (palm opposition, a power wrap: the thumb tip lies beside the
-/// finger tips, on the same side of the object). The SDH's thumb tip opposes the midpoint of its
-/// two finger tips:
+/// tips) that either the palm opposes (palm opposition, a power grasp: the human's palm touches
+/// the object, within sim.contact_gap and the stability suite's touch_distance) or the thumb (pad
+/// opposition: only the digits touch). The SDH's thumb tip opposes the midpoint of its two
+/// finger tips:
 /// - pad: the SDH's opposition along the human's, the midpoints together, the SDH's approach the
 ///   human's made orthogonal to it; the aperture the human's (thumb tip to the fingers' centroid);
 /// - palm: the SDH placed as the transplant (its grasp centre at the human's, its approach the
@@ -814,9 +819,16 @@ inline constexpr int k_virtual_finger_openings = 151;
   const Vec3 fingers_h = 0.25 * (at(h.frame("index_tip")) + at(h.frame("middle_tip")) +
                                  at(h.frame("ring_tip")) + at(h.frame("pinky_tip")));
   const Composite shape = object.composite();  // parts() views it: keep it alive
-  bool pad = false;  // the object lies between the thumb tip and the fingers' centroid
-  for (int i = 1; i < 100 && !pad; ++i)
-    pad = detail::nearest_surface(shape, thumb_h + 0.01 * i * (fingers_h - thumb_h)).distance < 0;
+  // Palm opposition when the palm touches the object (within the approach's contact gap and the
+  // stability suite's touch distance), pad opposition when only the digits do.
+  const Composite in_hand = object.composite(g.hand_pose.inverse());
+  double palm_distance = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < h.n_shapes; ++k)
+    if (h.shapes[k].link == h.link("palm"))
+      for (const Primitive& part : in_hand.parts())
+        palm_distance = std::min(palm_distance, signed_distance(world_shape(hd, k), part).distance);
+  const bool pad =
+      !(palm_distance <= options.sim.contact_gap + options.sim.stability.touch_distance);
   const Eigen::Isometry3d target = detail::sdh_grasp_target(g);
   const Vec3 approach = target.linear().col(2);
   const Vec3 opposition = pad ? Vec3(fingers_h - thumb_h) : Vec3(target.linear().col(0));
@@ -986,6 +998,7 @@ using TopologicalTaskSet =
     out.q_open = q_hand;
     return true;
   };
+  r.human_winding = y;
   bool placed = plan_for(y, r);
   // Closing corrections: the windings the closing leaves, measured by closing the placed hand,
   // correct the targets (target += y - closed windings) and the plan is made again; the plan
@@ -1003,6 +1016,7 @@ using TopologicalTaskSet =
       target = (target + (y - w)).cwiseMax(0.0);
       RobotGrasp c;
       c.method = r.method;
+      c.human_winding = y;
       if (!plan_for(target, c)) break;
       w = closed_windings(c);
       if ((w - y).norm() < error) {

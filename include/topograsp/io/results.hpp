@@ -339,14 +339,15 @@ inline void check_scene_names(const ExperimentOptions& options) {
     r.set("shake_seed", seed);
     r.set("stable", t.stable());
     r.set("scene", t.planned ? Json(scene_path(object.name, g.id, to_string(t.method))) : Json());
-    // The human's y as the method used it (topological: around its winding reference).
-    r.set("winding_human",
-          detail::json_vector(t.winding_targets.empty() ? g.descriptor.values
-                                                        : t.winding_targets.back()));
+    // The human's y around the point of winding_robot (topological: its winding reference).
+    r.set("winding_human", detail::json_vector(t.human_winding.value_or(g.descriptor.values)));
     r.set("winding_robot", detail::json_vector(t.winding));
     r.set("plan_ms", t.plan_ms);
     r.set("sweeps", t.sweeps);
     r.set("reason", t.planned ? t.stability.reason : t.reason);
+    // What the planner said of a planned transfer (AICO's termination, the virtual finger's
+    // opposition), null if nothing.
+    r.set("planner", t.planned && !t.reason.empty() ? Json(t.reason) : Json());
     detail::set_stability(r, t.planned ? &t.stability : nullptr);
     detail::set_second_and_quality(r, t.planned ? t.second : std::nullopt,
                                    t.planned ? &t.quality : nullptr, second_name);
