@@ -307,3 +307,27 @@ TEST_CASE("a state that leaves the representable range ends the run in that step
   CHECK(w.body(b).x.z() == 0.0);  // the step was undone
   CHECK(w.step() == Status::numerical_issue);
 }
+
+TEST_CASE("a ball deep inside a huge turning sphere keeps its contact point near it",
+          "[physics][input]") {
+  // Found by fuzz_stepper (fuzz/regressions/stepper/deep_overlap_far_contact_point): the point
+  // midway between the surfaces of a 0.4 m ball and a kinematic sphere of radius 1e127 around it
+  // lay 5e126 m away; the sphere's spin times that lever arm overflowed the solver (NaN impulse).
+  // The point is kept within twice the smaller shape's bounding radius of its centre.
+  World<> w;
+  BodyDesc k;
+  k.type = BodyType::kinematic;
+  const std::array<ShapeSpec, 1> huge{sphere_of(1e127)};
+  k.shapes = huge;
+  const int shell = w.add_body(k);
+  const int ball = add(w, sphere_of(0.4), 7.0);
+  w.set_velocity(shell, Vec3(-5, -5, -5), Vec3(-10, -10, -10));
+  w.set_velocity(ball, Vec3(-7, 0, 9), Vec3(0, 4.6, -2.5));
+  for (int s = 0; s < 3; ++s) REQUIRE(w.step() == Status::success);
+  CHECK(all_finite(w));
+  // (Taken at the last step's start: the ball has moved on by less than 0.2 m since.)
+  for (const Manifold<double>& m : w.manifolds())
+    for (int i = 0; i < m.count; ++i)
+      CHECK((m.points[static_cast<std::size_t>(i)].point - w.body(ball).x).norm() <
+            2.0 * 0.4 + w.options().speculative_distance + 0.2);
+}

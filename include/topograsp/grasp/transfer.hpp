@@ -635,9 +635,9 @@ inline constexpr double k_fingertip_max_error = 0.5;
 /// Fingertip mapping (Rohling and Hollerbach 1993): the human's thumb, index and ring fingertips
 /// (the ring, not the middle, because its distance to the index is nearer the SDH's finger
 /// spacing) scaled to the SDH's size and put on the object's surface (fingertip_targets); the SDH
-/// on a free base fitted by damped least squares,
-/// within its joint limits, so that its thumb tip, finger 1 tip and finger 2 tip lie on them,
-/// started from the transplant pose with a weak pull toward it (options.fingertip_prior); then
+/// on a free base fitted by damped least squares, within its joint limits, so that its thumb tip,
+/// finger 1 tip and finger 2 tip lie on them, started from the transplant pose with a weak pull
+/// toward it (options.fingertip_prior); then
 /// opened until clear of the object (open_until_clear), backed off along its approach only if it
 /// still overlaps, or moved on until contact (at most final_approach), and closed until contact.
 ///
@@ -646,8 +646,8 @@ inline constexpr double k_fingertip_max_error = 0.5;
 /// finite (fingertip targets so far apart that their squared errors overflow, e.g.
 /// fingertip_scale = 1e300), a fit whose fingertips end more than k_fingertip_max_error from
 /// their targets (targets out of the hand's reach, e.g. fingertip_scale = 1e10), or a fitted hand
-/// that HandScene cannot take. It never reports the
-/// transplant pose it starts from as a fingertip transfer.
+/// that HandScene cannot take. It never reports the transplant pose it starts from as a fingertip
+/// transfer.
 [[nodiscard]] inline RobotGrasp transfer_fingertip(const GraspObject& object, const HumanGrasp& g,
                                                    const TransferOptions& options = {}) {
   const auto t0 = detail::Clock::now();
@@ -999,7 +999,7 @@ using TopologicalTaskSet =
     return true;
   };
   r.human_winding = y;
-  bool placed = plan_for(y, r);
+  const bool placed = plan_for(y, r);
   // Closing corrections: the windings the closing leaves, measured by closing the placed hand,
   // correct the targets (target += y - closed windings) and the plan is made again; the plan
   // whose closed windings come nearest y is kept.

@@ -853,6 +853,24 @@ class World {
     return v;
   }
 
+  // A contact point lies midway between the two surfaces. When the smaller shape lies deep inside
+  // the larger one (a sphere of radius 1e127 around a ball of 0.4 m: an overlap of 1e127 m) that
+  // point lies far outside both bodies, and its lever arms turn the solver's impulses into
+  // overflow. Points farther than twice the smaller shape's bounding radius (plus the margin)
+  // from its centre are moved back to that distance along the same line; no overlap shallower
+  // than the smaller shape's own size is touched.
+  static void keep_points_near(const Collider<S>& ca, const Collider<S>& cb, S margin,
+                               ContactSet<S>& cs) noexcept {
+    const Collider<S>& small = ca.bounding_radius <= cb.bounding_radius ? ca : cb;
+    const S reach = S(2) * small.bounding_radius + margin;
+    for (int k = 0; k < cs.count; ++k) {
+      V3& p = cs.points[static_cast<std::size_t>(k)].point;
+      const V3 d = p - small.p;
+      const S r = d.norm();
+      if (r > reach) p = small.p + d * (reach / r);
+    }
+  }
+
   // The narrow phase on every pair whose bounding spheres are within the margin, with each new
   // point matched to the previous step's by feature id (match_contacts()).
   void find_contacts() noexcept {
@@ -868,6 +886,7 @@ class World {
       }
       ContactSet<S> cs;
       collide<S>(view(ca), view(cb), margin, cs);
+      keep_points_near(ca, cb, margin, cs);
       match_contacts<S>(m, cs);
     }
   }
