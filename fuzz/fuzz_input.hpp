@@ -21,6 +21,28 @@
 
 namespace topograsp::fuzz {
 
+/// \p s as a C++ string literal, so that every byte of a failing input is visible.
+inline std::string c_literal(std::string_view s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (u < 0x20 || u >= 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", u);
+      out += buf;
+      // A hex escape swallows the hex digits after it: end the literal there.
+      out += "\" \"";
+    } else {
+      out += c;
+    }
+  }
+  out += '"';
+  return out;
+}
+
 /// Reads the values of one fuzz input from its bytes.
 class FuzzInput {
  public:

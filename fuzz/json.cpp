@@ -23,28 +23,8 @@
 namespace {
 
 using topograsp::Json;
+using topograsp::fuzz::c_literal;
 using topograsp::fuzz::fuzz_fail;
-
-// An input as a C++ string literal, so that every byte is visible.
-std::string quoted(std::string_view s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    const auto u = static_cast<unsigned char>(c);
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (u < 0x20 || u >= 0x7f) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02x", u);
-      out += buf;
-      // A hex escape swallows the hex digits after it: end the literal there.
-      out += "\" \"";
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
 
 // Where a and b first differ ("" if they are equal).
 std::string difference(const Json& a, const Json& b, const std::string& path) {
@@ -62,7 +42,7 @@ std::string difference(const Json& a, const Json& b, const std::string& path) {
     return path + ": " + topograsp::fuzz::num(a.as_number()) + " became " +
            topograsp::fuzz::num(b.as_number());
   if (a.is_string() && a.as_string() != b.as_string())
-    return path + ": " + quoted(a.as_string()) + " became " + quoted(b.as_string());
+    return path + ": " + c_literal(a.as_string()) + " became " + c_literal(b.as_string());
   if (a.is_array()) {
     if (a.as_array().size() != b.as_array().size()) return path + ": the array sizes differ";
     for (std::size_t k = 0; k < a.as_array().size(); ++k) {
@@ -76,7 +56,7 @@ std::string difference(const Json& a, const Json& b, const std::string& path) {
     for (std::size_t k = 0; k < a.as_object().size(); ++k) {
       const auto& [ka, va] = a.as_object()[k];
       const auto& [kb, vb] = b.as_object()[k];
-      if (ka != kb) return path + ": key " + quoted(ka) + " became " + quoted(kb);
+      if (ka != kb) return path + ": key " + c_literal(ka) + " became " + c_literal(kb);
       std::string d = difference(va, vb, path + "." + ka);
       if (!d.empty()) return d;
     }
@@ -135,7 +115,7 @@ std::string not_json(std::string_view t) {
                                 t[end] == '.' || t[end] == 'e' || t[end] == 'E'))
         ++end;
       if (!ok || j != end)
-        return "the number " + quoted(t.substr(start, end - start)) + " at offset " +
+        return "the number " + c_literal(t.substr(start, end - start)) + " at offset " +
                std::to_string(start);
       i = end;
       continue;
@@ -159,10 +139,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       fuzz_fail("json",
                 std::string("parse threw ") + typeid(e).name() +
                     " (not topograsp::invalid_argument): " + e.what(),
-                "text = " + quoted(text));
+                "text = " + c_literal(text));
     }
     if (const std::string bad = not_json(text); !bad.empty())
-      fuzz_fail("json", "parse accepted text that is not JSON: " + bad, "text = " + quoted(text));
+      fuzz_fail("json", "parse accepted text that is not JSON: " + bad,
+                "text = " + c_literal(text));
     for (const int indent : {0, 2}) {
       const std::string dumped = value.dump(indent);
       Json again;
@@ -171,13 +152,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       } catch (const std::exception& e) {
         fuzz_fail("json",
                   "the dump (indent " + std::to_string(indent) + ") does not parse: " + e.what(),
-                  "text = " + quoted(text) + "\ndump = " + quoted(dumped));
+                  "text = " + c_literal(text) + "\ndump = " + c_literal(dumped));
       }
       const std::string d = difference(value, again, "$");
       if (!d.empty())
-        fuzz_fail("json",
-                  "dump (indent " + std::to_string(indent) + ") and parse changed the value",
-                  "text = " + quoted(text) + "\ndump = " + quoted(dumped) + "\nat " + quoted(d));
+        fuzz_fail(
+            "json", "dump (indent " + std::to_string(indent) + ") and parse changed the value",
+            "text = " + c_literal(text) + "\ndump = " + c_literal(dumped) + "\nat " + c_literal(d));
     }
   });
 }

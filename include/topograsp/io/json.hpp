@@ -18,6 +18,7 @@
 #include <vector>
 
 #include <topograsp/core/error.hpp>
+#include <topograsp/io/detail/utf8.hpp>
 
 namespace topograsp {
 
@@ -241,24 +242,6 @@ class Json {
     }
     return code;
   }
-  // Appends the code point \p cp (<= 0x10FFFF, not a surrogate) as UTF-8.
-  static void append_utf8(std::string& s, unsigned cp) {
-    if (cp < 0x80u) {
-      s += static_cast<char>(cp);
-    } else if (cp < 0x800u) {
-      s += static_cast<char>(0xC0u | (cp >> 6));
-      s += static_cast<char>(0x80u | (cp & 0x3Fu));
-    } else if (cp < 0x10000u) {
-      s += static_cast<char>(0xE0u | (cp >> 12));
-      s += static_cast<char>(0x80u | ((cp >> 6) & 0x3Fu));
-      s += static_cast<char>(0x80u | (cp & 0x3Fu));
-    } else {
-      s += static_cast<char>(0xF0u | (cp >> 18));
-      s += static_cast<char>(0x80u | ((cp >> 12) & 0x3Fu));
-      s += static_cast<char>(0x80u | ((cp >> 6) & 0x3Fu));
-      s += static_cast<char>(0x80u | (cp & 0x3Fu));
-    }
-  }
   static std::string parse_string(std::string_view t, std::size_t& i) {
     if (i >= t.size() || t[i] != '"') fail(i, "expected a string");
     ++i;
@@ -307,7 +290,7 @@ class Json {
             cp = 0x10000u + ((cp - 0xD800u) << 10) + (low - 0xDC00u);
             i += 6;
           }
-          append_utf8(s, cp);
+          detail::append_utf8(s, cp);
           break;
         }
         default:

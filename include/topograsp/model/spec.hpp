@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <initializer_list>
 #include <string_view>
 
 #include <topograsp/core/pose.hpp>
@@ -263,6 +264,39 @@ template <class... F>
 [[nodiscard]] constexpr std::array<FrameSpec, sizeof...(F)> frames(F... f) noexcept {
   return {FrameSpec(f)...};
 }
+/// The arrays \p a and \p b as one (an imported hand's frames and the fingertips added to them).
+template <class T, std::size_t N, std::size_t M>
+[[nodiscard]] constexpr std::array<T, N + M> join(const std::array<T, N>& a,
+                                                  const std::array<T, M>& b) noexcept {
+  std::array<T, N + M> out{};
+  for (std::size_t i = 0; i < N; ++i) out[i] = a[i];
+  for (std::size_t i = 0; i < M; ++i) out[N + i] = b[i];
+  return out;
+}
+
+/// A joint's closing direction by the joint's (its link's) name, for with_closing().
+struct Closing {
+  Name joint;
+  double direction = 1.0;  ///< +1: increasing the value closes the hand, -1: decreasing does
+};
+
+/// \p links with the closing directions \p closing set (an imported hand, whose file cannot say
+/// which way its joints close). A name that is no link of \p links does not compile.
+template <std::size_t N>
+[[nodiscard]] constexpr std::array<LinkSpec, N> with_closing(
+    std::array<LinkSpec, N> links, std::initializer_list<Closing> closing) noexcept {
+  for (const Closing& c : closing) {
+    bool found = false;
+    for (LinkSpec& l : links)
+      if (l.name == c.joint) {
+        l.closing = c.direction;
+        found = true;
+      }
+    if (!found) detail::model_error("with_closing: no link of that name");
+  }
+  return links;
+}
+
 /// Declares a hand: its palm centre and its fingers (exactly one of them the thumb).
 template <class... F>
 [[nodiscard]] constexpr HandSpec<sizeof...(F)> hand(Name palm, F... f) noexcept {

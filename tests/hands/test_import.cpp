@@ -1,0 +1,431 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Hands from URDF and MJCF (io/hand_import.hpp): the made-up three-finger hand of tests/hands/data,
+// imported at build time by topograsp_import_hand() into constexpr models, has MuJoCo's own
+// kinematics of the same file (sites, geoms, bodies; 20 random configurations); what the import
+// reads (classes, units, couplings, actuators, approximations); and each refusal names the file,
+// the line, the element and the problem.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+
+#include <catch2/catch.hpp>
+#include <topograsp/io/hand_import.hpp>
+#include <topograsp/kinematics/forward.hpp>
+#include <topograsp/model/model.hpp>
+
+#include "support/random.hpp"
+#include "support/throws.hpp"
+#include "three_finger_mjcf.hpp"  // made by topograsp_import_hand() (tests/CMakeLists.txt)
+#include "three_finger_urdf.hpp"
+
+#ifdef TOPOGRASP_HAVE_MUJOCO
+#include <mujoco/mujoco.h>
+#endif
+
+using namespace topograsp;
+
+namespace {
+
+const std::string data_dir = TOPOGRASP_HANDS_DATA;
+
+// The hand descriptions: what the files cannot say, in the files' names.
+namespace th = topograsp::test_hands;
+constexpr auto mjcf_hand = make_model(
+    "three_finger_mjcf",
+    with_closing(th::mjcf::links, {{"index_base", 1},
+                                   {"index_mid", 1},
+                                   {"index_dist", 1},
+                                   {"middle_base", 1},
+                                   {"middle_mid", 1},
+                                   {"thumb_dist", 1}}),
+    th::mjcf::shapes, th::mjcf::frames,
+    hand("palm_centre", finger("index", {"index_abd", "index_mid", "index_dist", "index_tip"}),
+         finger("middle", {"middle_base", "middle_mid", "middle_dist", "middle_tip"}),
+         thumb("thumb", {"thumb_base", "thumb_dist", "thumb_tip"})));
+
+constexpr auto urdf_hand = make_model(
+    "three_finger_urdf", with_closing(th::urdf::links, {{"index_mid", 1}, {"thumb_dist", 1}}),
+    th::urdf::shapes,
+    join(th::urdf::frames, frames(frame("palm_centre", "palm", at(0, 0, 0.03)),
+                                  frame("thumb_tip", "thumb_dist", at(0, 0, 0.035)))),
+    hand("palm_centre", finger("index", {"index_base", "index_mid", "index_dist", "index_tip"}),
+         thumb("thumb", {"thumb_base", "thumb_dist", "thumb_tip"})));
+
+// 16 MJCF joints' worth of checks need the link of a joint by the file's name.
+const LinkSpec& link_named(const ImportedHand& h, std::string_view name) {
+  for (const LinkSpec& l : h.links)
+    if (l.name.view() == name) return l;
+  FAIL("no link " << name);
+  return h.links.front();
+}
+
+bool has_note(const ImportedHand& h, std::string_view fragment) {
+  for (const std::string& n : h.notes)
+    if (n.find(fragment) != std::string::npos) return true;
+  return false;
+}
+
+// The message of the import_error (or xml_error) that importing \p text throws.
+std::string import_failure(const std::string& text, const ImportOptions& options = {}) {
+  try {
+    (void)import_hand(parse_xml(text, "hand.xml"), options);
+  } catch (const invalid_argument& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+}  // namespace
+
+TEST_CASE("hands: an MJCF hand is read with its classes, units, couplings and actuators") {
+  const ImportedHand h = import_hand_file(data_dir + "/three_finger.xml");
+  CHECK(h.format == HandFileFormat::mjcf);
+  // Links: the root, then depth first; a body with two joints gives two links, the first named
+  // after its joint.
+  REQUIRE(h.links.size() == 11);
+  CHECK(h.links[0].name.view() == "palm");
+  CHECK(h.links[0].parent.empty());
+  CHECK(h.links[1].name.view() == "index_abd");
+  CHECK(h.links[2].name.view() == "index_base");
+  CHECK(h.links[2].parent.view() == "index_abd");
+  CHECK(h.joint_names[2] == "index_mcp");
+  // Degrees to radians; ranges and axes from the classes (knuckle inside finger).
+  const LinkSpec& abd = link_named(h, "index_abd");
+  CHECK(abd.axis == std::array<double, 3>{1, 0, 0});
+  CHECK(abd.lower == Approx(-20 * pi / 180));
+  CHECK(abd.upper == Approx(20 * pi / 180));
+  CHECK(abd.armature == 0.001);
+  CHECK(link_named(h, "middle_dist").upper == Approx(80 * pi / 180));
+  CHECK(link_named(h, "thumb_base").lower == Approx(-30 * pi / 180));
+  // The joint away from its body's origin: index_mcp at z = 5 mm of index_base's body frame.
+  CHECK(link_named(h, "index_base").origin.p[2] == Approx(0.005));
+  // Actuators: a class's force range, a gear, a fixed tendon's coefficients.
+  CHECK(abd.effort == Approx(0.5));
+  CHECK(link_named(h, "index_base").effort == Approx(0.8));
+  CHECK(link_named(h, "index_mid").effort == Approx(1.0));
+  CHECK(link_named(h, "index_dist").effort == Approx(0.8));
+  CHECK(link_named(h, "thumb_base").effort == Approx(0.8));
+  CHECK(link_named(h, "thumb_dist").effort == 0.0);  // its motor has no force range
+  CHECK(has_note(h, "a_thumb_slide has no force range"));
+  // The coupling: middle_dip = 0.05 + 0.7 middle_pip, without an actuator of its own.
+  const LinkSpec& dip = link_named(h, "middle_dist");
+  CHECK(dip.mimic.view() == "middle_mid");
+  CHECK(dip.multiplier == 0.7);
+  CHECK(dip.offset == 0.05);
+  CHECK(dip.armature == 0.0);
+  // Geoms: the visual one left out, the ellipsoid a capsule; sites are frames.
+  CHECK(h.shapes.size() == 10);
+  CHECK(has_note(h, "ellipsoid"));
+  REQUIRE(h.frames.size() == 5);
+  CHECK(h.frames[0].name.view() == "palm_centre");
+  // The root body's pose in the world is dropped.
+  CHECK(h.links[0].origin == Pose{});
+  CHECK(link_named(h, "palm").mass == 0.4);
+}
+
+TEST_CASE("hands: the header made at build time holds what the import reads") {
+  for (const bool urdf : {false, true}) {
+    const ImportedHand h =
+        import_hand_file(data_dir + (urdf ? "/three_finger.urdf" : "/three_finger.xml"));
+    const auto& links = urdf
+                            ? std::vector<LinkSpec>(th::urdf::links.begin(), th::urdf::links.end())
+                            : std::vector<LinkSpec>(th::mjcf::links.begin(), th::mjcf::links.end());
+    REQUIRE(links.size() == h.links.size());
+    for (std::size_t i = 0; i < links.size(); ++i) {
+      INFO(h.links[i].name.view());
+      CHECK(links[i].name == h.links[i].name);
+      CHECK(links[i].parent == h.links[i].parent);
+      CHECK(links[i].type == h.links[i].type);
+      CHECK(links[i].lower == h.links[i].lower);  // shortest round-trip numbers: exact
+      CHECK(links[i].effort == h.links[i].effort);
+      CHECK(links[i].mimic == h.links[i].mimic);
+      CHECK(links[i].origin.isometry().isApprox(h.links[i].origin.isometry(), 1e-14));
+    }
+  }
+}
+
+TEST_CASE("hands: a URDF hand is read with its joints, mimic and collisions") {
+  const ImportedHand h = import_hand_file(data_dir + "/three_finger.urdf");
+  CHECK(h.format == HandFileFormat::urdf);
+  REQUIRE(h.links.size() == 8);
+  CHECK(h.links[0].name.view() == "base");
+  CHECK(link_named(h, "palm").type == JointType::fixed);
+  const LinkSpec& abd = link_named(h, "index_base");
+  CHECK(abd.effort == 0.5);
+  CHECK(abd.velocity == 2.0);
+  const LinkSpec& dip = link_named(h, "index_dist");
+  CHECK(dip.mimic.view() == "index_mid");
+  CHECK(dip.multiplier == 0.8);
+  CHECK(dip.offset == 0.05);
+  CHECK(dip.effort == 0.0);  // driven through its source
+  CHECK(has_note(h, "mimic joint index_dip"));
+  CHECK(link_named(h, "thumb_base").lower == Approx(-pi));  // continuous
+  CHECK(has_note(h, "continuous joint thumb_rot"));
+  CHECK(link_named(h, "thumb_dist").type == JointType::prismatic);
+  // Collisions: box (full sizes halved), cylinders, a sphere and the mesh's bounding box.
+  REQUIRE(h.shapes.size() == 7);
+  CHECK(h.shapes[0].size == std::array<double, 3>{0.04, 0.015, 0.035});
+  const ShapeSpec& mesh = h.shapes[2];
+  CHECK(mesh.type == ShapeType::box);
+  CHECK(mesh.size[0] == Approx(0.01));
+  CHECK(mesh.size[1] == Approx(0.005));
+  CHECK(mesh.size[2] == Approx(0.005));    // scaled by 2 along z
+  CHECK(mesh.pose.p[0] == Approx(0.011));  // the origin plus the box's centre
+  CHECK(mesh.pose.p[2] == Approx(0.005 + 0.006));
+  CHECK(has_note(h, "bounding box"));
+}
+
+TEST_CASE("hands: imported models are constexpr models with their hand descriptions") {
+  STATIC_REQUIRE(mjcf_hand.nq == 9);  // 10 joints, middle_dip coupled
+  STATIC_REQUIRE(urdf_hand.nq == 4);  // 5 joints, index_dip mimics index_pip
+  STATIC_REQUIRE(mjcf_hand.n_fingers == 3);
+  STATIC_REQUIRE(urdf_hand.joint_spec(1).closing == 1.0);
+  KinematicsData<mjcf_hand> d;
+  forward_kinematics(d, Vec<mjcf_hand.nq>::Zero());
+  // The index tip, straight: along the chain of the file.
+  CHECK(d.frame_p[mjcf_hand.frame("index_tip")].allFinite());
+}
+
+#ifdef TOPOGRASP_HAVE_MUJOCO
+namespace {
+
+struct MjModelDeleter {
+  void operator()(mjModel* m) const { mj_deleteModel(m); }
+};
+struct MjDataDeleter {
+  void operator()(mjData* d) const { mj_deleteData(d); }
+};
+
+std::unique_ptr<mjModel, MjModelDeleter> load(const std::string& path) {
+  char error[1000] = "";
+  std::unique_ptr<mjModel, MjModelDeleter> m(mj_loadXML(path.c_str(), nullptr, error, 1000));
+  INFO(error);
+  REQUIRE(m);
+  return m;
+}
+
+// Sets MuJoCo's joints from q of model M (a mimic joint from its source) and runs its kinematics.
+template <const auto& M>
+void set_mujoco(const mjModel* m, mjData* md, const ImportedHand& h, const Vec<M.nq>& q) {
+  for (std::size_t i = 0; i < h.links.size(); ++i) {
+    if (h.joint_names[i].empty() || M.links[i].spec.type == JointType::fixed) continue;
+    const int j = mj_name2id(m, mjOBJ_JOINT, h.joint_names[i].c_str());
+    REQUIRE(j >= 0);
+    const Link& l = M.links[i];
+    md->qpos[m->jnt_qposadr[j]] = l.actuated ? q[l.q] : l.spec.multiplier * q[l.q] + l.spec.offset;
+  }
+  mj_kinematics(m, md);
+}
+
+// MuJoCo's pose of the body \p name relative to the root body \p root.
+Eigen::Isometry3d body_in_root(const mjModel* m, const mjData* d, const char* name,
+                               const char* root) {
+  const auto pose = [&](int b) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.translation() = Vec3(d->xpos[3 * b], d->xpos[3 * b + 1], d->xpos[3 * b + 2]);
+    T.linear() = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(d->xmat + 9 * b);
+    return T;
+  };
+  const int b = mj_name2id(m, mjOBJ_BODY, name), r = mj_name2id(m, mjOBJ_BODY, root);
+  REQUIRE(b >= 0);
+  REQUIRE(r >= 0);
+  return pose(r).inverse() * pose(b);
+}
+
+}  // namespace
+
+TEST_CASE("hands: the imported MJCF hand has MuJoCo's kinematics of the same file") {
+  const ImportedHand h = import_hand_file(data_dir + "/three_finger.xml");
+  const auto m = load(data_dir + "/three_finger.xml");
+  std::unique_ptr<mjData, MjDataDeleter> md(mj_makeData(m.get()));
+  std::mt19937_64 rng(7);
+  KinematicsData<mjcf_hand> d;
+  for (int trial = 0; trial < 20; ++trial) {
+    const auto q = test::random_configuration<mjcf_hand>(rng);
+    forward_kinematics(d, q);
+    set_mujoco<mjcf_hand>(m.get(), md.get(), h, q);
+    const int root = mj_name2id(m.get(), mjOBJ_BODY, "palm");
+    const Vec3 p0(md->xpos[3 * root], md->xpos[3 * root + 1], md->xpos[3 * root + 2]);
+    const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> R0(md->xmat + 9 * root);
+    // Every site, and every collision geom's centre and axis, in the root's frame.
+    for (std::size_t f = 0; f < mjcf_hand.n_frames; ++f) {
+      const std::string site(mjcf_hand.frames[f].spec.name.view());
+      const int s = mj_name2id(m.get(), mjOBJ_SITE, site.c_str());
+      REQUIRE(s >= 0);
+      const Vec3 ps(md->site_xpos[3 * s], md->site_xpos[3 * s + 1], md->site_xpos[3 * s + 2]);
+      CHECK((R0.transpose() * (ps - p0) - d.frame_p[f]).norm() < 1e-12);
+    }
+    int shape = 0;
+    for (int g = 0; g < m->ngeom; ++g) {
+      if (m->geom_contype[g] == 0 && m->geom_conaffinity[g] == 0) continue;
+      const Vec3 pg(md->geom_xpos[3 * g], md->geom_xpos[3 * g + 1], md->geom_xpos[3 * g + 2]);
+      const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> Rg(md->geom_xmat +
+                                                                              9 * g);
+      const Eigen::Isometry3d ours =
+          link_pose(d, mjcf_hand.shapes[shape].link) *
+          mjcf_hand.shapes[static_cast<std::size_t>(shape)].spec.pose.isometry();
+      INFO("geom " << g);
+      CHECK((R0.transpose() * (pg - p0) - ours.translation()).norm() < 1e-12);
+      // The axis of capsules and cylinders up to its sign (MuJoCo's fromto runs it the other way);
+      // ours of the ellipsoid is the capsule along its longest axis.
+      if (m->geom_type[g] != mjGEOM_ELLIPSOID)
+        CHECK(std::abs((R0.transpose() * Rg.col(2)).dot(ours.linear().col(2))) > 1.0 - 1e-12);
+      ++shape;
+    }
+    CHECK(shape == static_cast<int>(mjcf_hand.n_shapes));
+  }
+}
+
+TEST_CASE("hands: the imported URDF hand has MuJoCo's kinematics of the same file") {
+  const ImportedHand h = import_hand_file(data_dir + "/three_finger.urdf");
+  const auto m = load(data_dir + "/three_finger.urdf");
+  std::unique_ptr<mjData, MjDataDeleter> md(mj_makeData(m.get()));
+  std::mt19937_64 rng(8);
+  KinematicsData<urdf_hand> d;
+  for (int trial = 0; trial < 20; ++trial) {
+    const auto q = test::random_configuration<urdf_hand>(rng);
+    forward_kinematics(d, q);
+    set_mujoco<urdf_hand>(m.get(), md.get(), h, q);
+    // Every link MuJoCo keeps as a body (it fuses links on fixed joints into their parents).
+    int compared = 0;
+    for (std::size_t i = 1; i < urdf_hand.n_links; ++i) {
+      const std::string name(urdf_hand.links[i].spec.name.view());
+      if (mj_name2id(m.get(), mjOBJ_BODY, name.c_str()) < 0) continue;
+      const Eigen::Isometry3d mj = body_in_root(m.get(), md.get(), name.c_str(), "base");
+      const Eigen::Isometry3d ours = link_pose(d, static_cast<int>(i));
+      INFO(name);
+      CHECK((mj.translation() - ours.translation()).norm() < 1e-12);
+      CHECK((mj.linear() - ours.linear()).norm() < 1e-12);
+      ++compared;
+    }
+    CHECK(compared >= 5);
+  }
+}
+#endif
+
+TEST_CASE("hands: a file that cannot be imported is refused, naming the file, line and element") {
+  const auto refused = [](const std::string& text, const std::string& fragment,
+                          const ImportOptions& options = {}) {
+    const std::string why = import_failure(text, options);
+    INFO(why);
+    CHECK(why.rfind("hand.xml:", 0) == 0);
+    CHECK(why.find(fragment) != std::string::npos);
+  };
+  const std::string urdf_head = "<robot name=\"r\">\n<link name=\"a\"/>\n<link name=\"b\"/>\n";
+  refused(urdf_head +
+              "<joint name=\"j\" type=\"revolute\"><parent link=\"a\"/><child "
+              "link=\"b\"/></joint></robot>",
+          "hand.xml:4: <joint name=\"j\">: revolute joint without <limit>");
+  refused(urdf_head +
+              "<joint name=\"j\" type=\"floating\"><parent link=\"a\"/><child "
+              "link=\"b\"/></joint></robot>",
+          "joint type \"floating\" is not supported");
+  refused(urdf_head +
+              "<joint name=\"j\" type=\"fixed\"><parent link=\"c\"/><child "
+              "link=\"b\"/></joint></robot>",
+          "parent link \"c\" is not in the file");
+  refused(urdf_head + "</robot>", "more than one root link (a, b)");
+  refused(urdf_head +
+              "<joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/>"
+              "</joint><joint name=\"k\" type=\"fixed\"><parent link=\"b\"/><child "
+              "link=\"a\"/></joint></robot>",
+          "no link is the root");
+  refused("<robot><link name=\"a_name_that_is_much_longer_than_31\"/></robot>",
+          "longer than 31 characters");
+  refused(urdf_head +
+              "<joint name=\"j\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/>"
+              "<limit lower=\"1\" upper=\"0\"/></joint></robot>",
+          "lower limit above upper limit");
+  refused(urdf_head +
+              "<joint name=\"j\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/>"
+              "<axis xyz=\"0 0\"/><limit lower=\"0\" upper=\"1\"/></joint></robot>",
+          "xyz=\"0 0\" has 2 numbers, expected 3");
+  refused(urdf_head +
+              "<joint name=\"j\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/>"
+              "<limit lower=\"0\" upper=\"x\"/><mimic joint=\"z\"/></joint></robot>",
+          "upper=\"x\" is not a list of finite numbers");
+  refused(urdf_head +
+              "<joint name=\"j\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/>"
+              "<limit lower=\"0\" upper=\"1\"/><mimic joint=\"z\"/></joint></robot>",
+          "mimics \"z\", which is not a joint below the root");
+  refused(
+      "<robot><link name=\"a\"><collision><geometry><mesh filename=\"gone.stl\"/>"
+      "</geometry></collision></link></robot>",
+      "cannot read the mesh");
+  {
+    ImportOptions skip;
+    skip.skip_missing_meshes = true;
+    const ImportedHand h = import_hand(
+        parse_xml("<robot><link name=\"a\"><collision><geometry><mesh filename=\"gone.stl\"/>"
+                  "</geometry></collision></link></robot>",
+                  "hand.xml"),
+        skip);
+    CHECK(h.shapes.empty());
+    CHECK(has_note(h, "could not be read and was left out"));
+  }
+  ImportOptions root_c;
+  root_c.root = "c";
+  refused(urdf_head + "</robot>", "no link called \"c\"", root_c);
+  // MJCF.
+  const auto mjcf = [](const std::string& body) {
+    return "<mujoco>\n<worldbody>\n<body name=\"palm\">\n" + body +
+           "\n</body>\n</worldbody>\n</mujoco>";
+  };
+  refused(mjcf("<body name=\"f\"><joint name=\"j\" type=\"ball\"/></body>"),
+          "hand.xml:4: <joint name=\"j\">: joint type \"ball\" is not supported");
+  refused(mjcf("<body name=\"f\"><joint name=\"j\" class=\"nope\"/></body>"),
+          "no default class called \"nope\"");
+  refused(mjcf("<body name=\"f\" euler=\"1 2\"><joint name=\"j\"/></body>"),
+          "euler=\"1 2\" has 2 numbers, expected 3");
+  refused(mjcf("<body name=\"f\" euler=\"1 2 3\" quat=\"1 0 0 0\"/>"),
+          "more than one orientation given");
+  refused(mjcf("<body name=\"f\"><joint name=\"j\" type=\"slide\"/></body>"),
+          "a slide joint without a range");
+  refused(mjcf("<body name=\"f\"><freejoint/></body>"), "a free joint below the root");
+  refused(mjcf("<body><geom size=\"0.1\"/></body>"), "a body without a name");
+  refused(mjcf("<geom type=\"box\" size=\"0.1 0.1\"/>"), "a box geom needs 3 size numbers");
+  refused(mjcf("<geom type=\"mesh\" mesh=\"m\"/>"), "no mesh asset called \"m\"");
+  refused("<mujoco><include file=\"x.xml\"/></mujoco>", "<include> is not supported");
+  refused("<mujoco><compiler angle=\"grad\"/><worldbody/></mujoco>", "angle=\"grad\"");
+  refused("<mujoco/>", "no <worldbody>");
+  refused("<mujoco><worldbody><body name=\"a\"/><body name=\"b\"/></worldbody></mujoco>",
+          "more than one top-level body (a, b): choose one with --root");
+  refused(
+      "<mujoco><worldbody><body name=\"a\"><body name=\"b\"><joint name=\"j\"/></body>"
+      "</body></worldbody><equality><joint joint1=\"j\" joint2=\"j\" polycoef=\"0 1 1 0 "
+      "0\"/></equality></mujoco>",
+      "only linear couplings");
+  refused(
+      "<mujoco><worldbody><body name=\"a\"/></worldbody><equality><joint joint1=\"x\"/>"
+      "</equality></mujoco>",
+      "needs joint1= and joint2=");
+  refused("<scene/>", "neither a URDF file (<robot>) nor an MJCF file (<mujoco>)");
+  // A root below the top: the body's subtree, its own pose and joint dropped.
+  ImportOptions root_f;
+  root_f.root = "f";
+  const ImportedHand cut = import_hand(
+      parse_xml(mjcf("<body name=\"f\" pos=\"1 0 0\"><joint name=\"i\"/><body name=\"g\"><joint "
+                     "name=\"j\" range=\"0 1\"/></body></body>"),
+                "hand.xml"),
+      root_f);
+  REQUIRE(cut.links.size() == 2);
+  CHECK(has_note(cut, "the joint i of the root body f is left out"));
+  CHECK(cut.links[0].name.view() == "f");
+  CHECK(cut.links[0].origin == Pose{});
+  CHECK(cut.links[1].upper == Approx(pi / 180));  // degrees, MJCF's default unit
+  // Not well-formed XML, and a file that is not there.
+  CHECK(import_failure("<robot><link name=\"a\"></robot>").rfind("hand.xml:1:", 0) == 0);
+  CHECK_THROWS_AS(import_hand_file(data_dir + "/not_there.urdf"), xml_error);
+}
+
+TEST_CASE("hands: model_header refuses a namespace that is not one") {
+  const ImportedHand h = import_hand_file(data_dir + "/three_finger.urdf");
+  for (const char* bad : {"", "1abc", "a:b", "a::", "::a", "a b", "a::1b"})
+    test::check_throws_naming([&] { (void)model_header(h, bad); }, "ns");
+  const std::string header = model_header(h, "my::hands");
+  CHECK(header.find("namespace my::hands {") != std::string::npos);
+  CHECK(header.find("// Note: the mimic joint index_dip") != std::string::npos);
+  CHECK(header.find("revolute(\"index_base\", \"palm\", ") != std::string::npos);
+}

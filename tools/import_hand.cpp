@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// topograsp_import_hand: a URDF or MJCF file to the C++ header of its links, collision shapes and
+// frames as constexpr arrays (io/hand_import.hpp), for make_model() and a hand description written
+// beside it (docs/models.md, "Bring your own hand"). The CMake function topograsp_import_hand()
+// runs it at build time.
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <topograsp/io/hand_import.hpp>
+
+namespace {
+
+constexpr const char* usage =
+    "usage: topograsp_import_hand FILE --out HEADER --namespace NS [--root NAME]\n"
+    "                             [--mesh-dir DIR] [--skip-missing-meshes] [--comment TEXT]...\n"
+    "Reads the URDF or MJCF FILE and writes HEADER: its links (with their joints), collision\n"
+    "shapes and frames (MJCF sites) as the constexpr arrays NS::links, NS::shapes and NS::frames\n"
+    "for topograsp::make_model().\n"
+    "  --root NAME            start at the link (URDF) or body (MJCF) NAME: a hand cut off an arm\n"
+    "  --mesh-dir DIR         look mesh files up in DIR (default: beside FILE; MJCF: its meshdir)\n"
+    "  --skip-missing-meshes  leave out collision meshes that cannot be read (listed as notes)\n"
+    "  --comment TEXT         a line at the top of HEADER (where FILE comes from, its licence)\n"
+    "Exit status: 0 written, 1 the file cannot be imported, 2 a wrong command line.\n";
+
+int wrong(const std::string& why) {
+  std::fprintf(stderr, "topograsp_import_hand: %s\n%s", why.c_str(), usage);
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string file, out, ns;
+  std::vector<std::string> comments;
+  topograsp::ImportOptions options;
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view a = argv[i];
+    const auto value = [&](std::string& target) {
+      if (i + 1 >= argc) return false;
+      target = argv[++i];
+      return true;
+    };
+    if (a == "--help" || a == "-h") {
+      std::fputs(usage, stdout);
+      return 0;
+    }
+    bool ok = true;
+    if (a == "--out") {
+      ok = value(out);
+    } else if (a == "--namespace") {
+      ok = value(ns);
+    } else if (a == "--root") {
+      ok = value(options.root);
+    } else if (a == "--mesh-dir") {
+      ok = value(options.mesh_dir);
+    } else if (a == "--comment") {
+      ok = value(comments.emplace_back());
+    } else if (a == "--skip-missing-meshes") {
+      options.skip_missing_meshes = true;
+    } else if (!a.empty() && a[0] == '-') {
+      return wrong("unknown option " + std::string(a));
+    } else if (file.empty()) {
+      file = a;
+    } else {
+      return wrong("more than one FILE (" + file + ", " + std::string(a) + ")");
+    }
+    if (!ok) return wrong(std::string(a) + " needs a value");
+  }
+  if (file.empty()) return wrong("no FILE");
+  if (out.empty()) return wrong("no --out HEADER");
+  if (ns.empty()) return wrong("no --namespace NS");
+  std::string header;
+  try {
+    const topograsp::ImportedHand hand = topograsp::import_hand_file(file, options);
+    header = topograsp::model_header(hand, ns, comments);
+    std::printf("%s: %zu links, %zu collision shapes, %zu frames", file.c_str(), hand.links.size(),
+                hand.shapes.size(), hand.frames.size());
+    std::printf(hand.notes.empty() ? "\n" : ", %zu notes (in the header)\n", hand.notes.size());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "topograsp_import_hand: %s\n", e.what());
+    return 1;
+  }
+  // Written beside its place, then renamed: a failed run never leaves half a header.
+  const std::filesystem::path target(out), temp(out + ".tmp");
+  {
+    std::ofstream f(temp, std::ios::binary);
+    f << header;
+    if (!f.flush()) {
+      std::fprintf(stderr, "topograsp_import_hand: cannot write %s\n", temp.string().c_str());
+      return 1;
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(temp, target, ec);
+  if (ec) {
+    std::fprintf(stderr, "topograsp_import_hand: cannot rename %s to %s: %s\n",
+                 temp.string().c_str(), out.c_str(), ec.message().c_str());
+    std::filesystem::remove(temp, ec);
+    return 1;
+  }
+  return 0;
+}
