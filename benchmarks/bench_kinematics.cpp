@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Forward kinematics of all frames, and with the fingertip Jacobians, for the 20-DOF human hand and
-// the 14-DOF arm + SDH; side by side with Orocos KDL on the same trees when it is found.
+// Forward kinematics of all frames, and with the fingertip Jacobians, for the 20-DOF human hand,
+// the 14-DOF arm + SDH and the hands imported from MJCF (Allegro, LEAP, Shadow); side by side with
+// Orocos KDL on the same trees when it is found.
 #include <limits>
 #include <random>
 #include <vector>
 
 #include <topograsp/kinematics.hpp>
 #include <topograsp/model/models.hpp>
+#include <topograsp/model/models/allegro_hand.hpp>
+#include <topograsp/model/models/leap_hand.hpp>
+#include <topograsp/model/models/shadow_hand.hpp>
 
 #include "support/random.hpp"
 #include "support/ratio_reporter.hpp"
@@ -202,5 +206,8 @@ int main(int argc, char** argv) {
   register_all<models::human_hand>("human_hand_20dof");
   register_all<models::schunk_arm_sdh>("schunk_arm_sdh_14dof");
   register_all<models::human_hand_free>("human_hand_free_26dof");
+  register_all<models::allegro_hand>("allegro_hand_16dof");
+  register_all<models::leap_hand>("leap_hand_16dof");
+  register_all<models::shadow_hand>("shadow_hand_22dof");
   return topograsp::bench::run_with_ratios(argc, argv);
 }

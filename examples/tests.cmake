@@ -2,6 +2,7 @@
 # How each example runs as a test (short arguments so the suite stays fast).
 add_test(NAME "example: fingertips" COMMAND fingertips)
 add_test(NAME "example: custom_hand" COMMAND custom_hand)
+add_test(NAME "example: import_hand" COMMAND import_hand)
 add_test(NAME "example: wrap" COMMAND wrap --out ${CMAKE_CURRENT_BINARY_DIR}/wrap-out)
 add_test(NAME "example: grasp_transfer (small run)"
          COMMAND grasp_transfer --max-hypotheses 4 --jobs 2 --quiet --figures

@@ -5,12 +5,11 @@
 // runs it at build time.
 #include <cstdio>
 #include <exception>
-#include <filesystem>
-#include <fstream>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include <topograsp/io/detail/svg_text.hpp>
 #include <topograsp/io/hand_import.hpp>
 
 namespace {
@@ -74,34 +73,32 @@ int main(int argc, char** argv) {
   if (file.empty()) return wrong("no FILE");
   if (out.empty()) return wrong("no --out HEADER");
   if (ns.empty()) return wrong("no --namespace NS");
+  try {  // the namespace is checked before the file is read: model_header's check, on no hand
+    (void)topograsp::model_header(topograsp::ImportedHand{}, ns);
+  } catch (const topograsp::invalid_argument& e) {
+    return wrong(std::string("--namespace: ") + e.what());
+  }
   std::string header;
+  std::size_t links = 0, shapes = 0, frames = 0, notes = 0;
   try {
     const topograsp::ImportedHand hand = topograsp::import_hand_file(file, options);
     header = topograsp::model_header(hand, ns, comments);
-    std::printf("%s: %zu links, %zu collision shapes, %zu frames", file.c_str(), hand.links.size(),
-                hand.shapes.size(), hand.frames.size());
-    std::printf(hand.notes.empty() ? "\n" : ", %zu notes (in the header)\n", hand.notes.size());
+    links = hand.links.size();
+    shapes = hand.shapes.size();
+    frames = hand.frames.size();
+    notes = hand.notes.size();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "topograsp_import_hand: %s\n", e.what());
     return 1;
   }
-  // Written beside its place, then renamed: a failed run never leaves half a header.
-  const std::filesystem::path target(out), temp(out + ".tmp");
-  {
-    std::ofstream f(temp, std::ios::binary);
-    f << header;
-    if (!f.flush()) {
-      std::fprintf(stderr, "topograsp_import_hand: cannot write %s\n", temp.string().c_str());
-      return 1;
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, target, ec);
-  if (ec) {
-    std::fprintf(stderr, "topograsp_import_hand: cannot rename %s to %s: %s\n",
-                 temp.string().c_str(), out.c_str(), ec.message().c_str());
-    std::filesystem::remove(temp, ec);
+  try {  // a temporary file, then renamed: a failed run never leaves half a header
+    topograsp::detail::write_text_file(out, header);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "topograsp_import_hand: --out %s\n", e.what());
     return 1;
   }
+  std::printf("%s: %zu links, %zu collision shapes, %zu frames", file.c_str(), links, shapes,
+              frames);
+  std::printf(notes == 0 ? "\n" : ", %zu notes (in the header)\n", notes);
   return 0;
 }

@@ -89,10 +89,16 @@ inline std::string temporary_file_token() {
 /// \p path is left as it was.
 inline void write_text_file(const std::filesystem::path& path, std::string_view text) {
   namespace fs = std::filesystem;
-  const std::string shown = "\"" + path.string() + "\"";
+  // Built by appending: GCC 12 reports a false -Wrestrict for "literal" + std::string&& at -O2.
+  std::string shown(1, '"');
+  shown += path.string();
+  shown += '"';
   if (!path.has_filename()) throw_invalid_argument("path", shown + " names no file");
-  const fs::path temp =
-      path.parent_path() / ("." + path.filename().string() + ".tmp-" + temporary_file_token());
+  std::string temp_name(1, '.');
+  temp_name += path.filename().string();
+  temp_name += ".tmp-";
+  temp_name += temporary_file_token();
+  const fs::path temp = path.parent_path() / temp_name;
   const auto fail = [&](std::string_view what, int error) {
     std::error_code ignored;
     fs::remove(temp, ignored);
