@@ -402,6 +402,24 @@ TEST_CASE("hands: a file that cannot be imported is refused, naming the file, li
       "</equality></mujoco>",
       "needs joint1= and joint2=");
   refused("<scene/>", "neither a URDF file (<robot>) nor an MJCF file (<mujoco>)");
+  // What make_model() would refuse, refused at import with the file and the name.
+  refused(mjcf("<body name=\"palm\"/>"), "hand.xml: link \"palm\": a second link or frame");
+  refused(mjcf("<site name=\"palm\"/>"), "hand.xml: frame \"palm\": a second link or frame");
+  refused(
+      "<mujoco><worldbody><body name=\"a\"><body name=\"b\"><joint name=\"j\" "
+      "range=\"0 1\"/><body name=\"c\"><joint name=\"k\" range=\"0 1\"/><body "
+      "name=\"d\"><joint name=\"l\" range=\"0 1\"/></body></body></body></body>"
+      "</worldbody><equality><joint joint1=\"k\" joint2=\"j\"/><joint joint1=\"l\" "
+      "joint2=\"k\"/></equality></mujoco>",
+      "joint of link \"d\": it is coupled to a joint that is fixed or itself coupled");
+  refused("<robot><link name=\"a\"><inertial><mass value=\"1e300\"/></inertial></link></robot>",
+          "link \"a\": its origin, mass or centre of mass is not finite or beyond 1e6");
+  refused(
+      "<robot><link name=\"a\"><collision><geometry><box size=\"1 0 1\"/></geometry>"
+      "</collision></link></robot>",
+      "hand.xml:1: <box>: its size must be > 0");
+  refused(mjcf("<body name=\"f\"><joint name=\"j\" range=\"0 1e308\"/></body>"),
+          "joint of link \"f\": its limits are not finite or lower is above upper");
   // A root below the top: the body's subtree, its own pose and joint dropped.
   ImportOptions root_f;
   root_f.root = "f";
@@ -428,4 +446,92 @@ TEST_CASE("hands: model_header refuses a namespace that is not one") {
   CHECK(header.find("namespace my::hands {") != std::string::npos);
   CHECK(header.find("// Note: the mimic joint index_dip") != std::string::npos);
   CHECK(header.find("revolute(\"index_base\", \"palm\", ") != std::string::npos);
+}
+
+TEST_CASE("hands: the import follows MuJoCo's and ROS's rules in the corners") {
+  const auto import_text = [](const std::string& text, const ImportOptions& options = {}) {
+    return import_hand(parse_xml(text, "hand.xml"), options);
+  };
+  // A childclass above the chosen root still applies below it.
+  ImportOptions hand_root;
+  hand_root.root = "hand";
+  const ImportedHand cut = import_text(
+      "<mujoco><default><default class=\"c\"><joint axis=\"1 0 0\" range=\"-0.5 0.5\"/>"
+      "</default></default><worldbody><body name=\"arm\" childclass=\"c\"><body name=\"hand\">"
+      "<body name=\"f\"><joint name=\"j\"/></body></body></body></worldbody></mujoco>",
+      hand_root);
+  REQUIRE(cut.links.size() == 2);
+  CHECK(cut.links[1].axis == std::array<double, 3>{1, 0, 0});
+  CHECK(cut.links[1].upper == Approx(0.5 * pi / 180));  // degrees: MJCF's default unit
+  // Two top-level <default> elements add up.
+  const ImportedHand two = import_text(
+      "<mujoco><compiler angle=\"radian\"/><default><joint range=\"-0.5 0.5\"/></default>"
+      "<default><geom density=\"500\"/></default><worldbody><body name=\"a\"><body name=\"b\">"
+      "<joint name=\"j\"/><geom type=\"box\" size=\"0.1 0.1 0.1\"/></body></body></worldbody>"
+      "</mujoco>");
+  CHECK(two.links[1].upper == 0.5);
+  CHECK(two.links[1].mass == Approx(500 * 0.008));
+  // autolimits="false": a range limits only a joint marked limited="true".
+  const ImportedHand unlimited = import_text(
+      "<mujoco><compiler angle=\"radian\" autolimits=\"false\"/><worldbody><body name=\"a\">"
+      "<body name=\"b\"><joint name=\"j\" range=\"0 1\"/></body><body name=\"c\"><joint "
+      "name=\"k\" range=\"0 1\" limited=\"true\"/></body></body></worldbody></mujoco>");
+  CHECK(unlimited.links[1].upper == Approx(pi));
+  CHECK(unlimited.links[2].upper == 1.0);
+  // Geoms outside inertiagrouprange weigh nothing; two actuators on a joint add up.
+  const ImportedHand weighed = import_text(
+      "<mujoco><compiler angle=\"radian\" inertiagrouprange=\"0 2\"/><worldbody><body "
+      "name=\"a\"><body name=\"b\"><joint name=\"j\" range=\"0 1\"/><geom type=\"box\" "
+      "size=\"0.1 0.1 0.1\" mass=\"1\"/><geom type=\"box\" size=\"0.1 0.1 0.1\" mass=\"2\" "
+      "group=\"3\"/></body></body></worldbody><actuator><motor joint=\"j\" forcerange=\"-1 "
+      "1\"/><motor joint=\"j\" forcerange=\"-2 2\"/></actuator></mujoco>");
+  CHECK(weighed.links[1].mass == 1.0);
+  CHECK(weighed.links[1].effort == 3.0);
+  // A tiny size is written exactly, not as 0.
+  const ImportedHand tiny = import_text(
+      "<mujoco><worldbody><body name=\"a\"><geom size=\"1e-16\"/></body></worldbody></mujoco>");
+  CHECK(model_header(tiny, "t").find("1e-16") != std::string::npos);
+  // What MuJoCo splices in or MuJoCo 3 adds, and names that would break the C++, are refused.
+  const auto refused = [&](const std::string& text, const std::string& fragment) {
+    std::string why = "(no error)";
+    try {
+      (void)import_text(text);
+    } catch (const invalid_argument& e) {
+      why = e.what();
+    }
+    INFO(why);
+    CHECK(why.find(fragment) != std::string::npos);
+  };
+  refused(
+      "<mujoco><worldbody><body name=\"a\"><include file=\"f.xml\"/></body></worldbody>"
+      "</mujoco>",
+      "<include> is not supported");
+  refused("<mujoco><worldbody><body name=\"a\"><frame/></body></worldbody></mujoco>",
+          "<frame> (MuJoCo 3) is not supported");
+  refused("<robot><link name=\"a&quot;b\"/></robot>", "has a quote, a backslash");
+  refused(
+      "<robot><link name=\"a\"/><link name=\"b\"/><joint name=\"j&#10;#error\" "
+      "type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint></robot>",
+      "control character");
+  for (const char* keyword : {"int", "a::class", "std"})
+    test::check_throws_naming([&] { (void)model_header(tiny, keyword); }, "ns");
+}
+
+TEST_CASE("hands: package:// meshes are found in ROS's package layout") {
+  namespace fs = std::filesystem;
+  const fs::path root = fs::temp_directory_path() / "topograsp_package_test";
+  fs::remove_all(root);
+  fs::create_directories(root / "my_hand" / "urdf");
+  fs::create_directories(root / "my_hand" / "meshes");
+  fs::copy_file(data_dir + "/meshes/box.stl", root / "my_hand" / "meshes" / "box.stl");
+  {
+    std::ofstream urdf(root / "my_hand" / "urdf" / "hand.urdf");
+    urdf << "<robot name=\"r\"><link name=\"a\"><collision><geometry><mesh "
+            "filename=\"package://my_hand/meshes/box.stl\"/></geometry></collision></link>"
+            "</robot>";
+  }
+  const ImportedHand h = import_hand_file((root / "my_hand" / "urdf" / "hand.urdf").string());
+  REQUIRE(h.shapes.size() == 1);
+  CHECK(h.shapes[0].size[0] == Approx(0.01));
+  fs::remove_all(root);
 }

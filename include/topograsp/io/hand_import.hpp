@@ -34,6 +34,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <limits>
 #include <map>
 #include <string>
@@ -115,13 +116,17 @@ struct Importer {
                        std::string(what));
   }
 
-  // The numbers of attribute `key` of e (whitespace separated), exactly `count` of them unless
-  // count is 0 (any number); `fallback` if the attribute is absent.
+  // The numbers of attribute `key` of e (whitespace separated, at least one), exactly `count` of
+  // them unless count is 0 (any number); `fallback` if the attribute is absent (an error if there
+  // is none and count is not 0).
   std::vector<double> numbers(const XmlElement& e, const std::map<std::string, std::string>& attrs,
                               const std::string& key, std::size_t count,
                               std::vector<double> fallback = {}) const {
     const auto it = attrs.find(key);
-    if (it == attrs.end()) return fallback;
+    if (it == attrs.end()) {
+      if (fallback.empty() && count != 0) fail(e, "no " + key + "= (it is required here)");
+      return fallback;
+    }
     std::vector<double> out;
     const std::string& s = it->second;
     std::size_t i = 0;
@@ -139,6 +144,7 @@ struct Importer {
       out.push_back(v);
       i = j;
     }
+    if (out.empty()) fail(e, key + "=\"" + s + "\" has no numbers");
     if (count != 0 && out.size() != count)
       fail(e, key + "=\"" + s + "\" has " + std::to_string(out.size()) + " numbers, expected " +
                   std::to_string(count));
@@ -160,6 +166,10 @@ struct Importer {
     return *n;
   }
   void check_name(const XmlElement& e, const std::string& n) const {
+    if (std::any_of(n.begin(), n.end(), [](char c) {
+          return c == '"' || c == '\\' || static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
+        }))
+      fail(e, "the name \"" + n + "\" has a quote, a backslash or a control character");
     if (n.size() > max_name_length)
       fail(e, "the name \"" + n + "\" is longer than " + std::to_string(max_name_length) +
                   " characters (a model's limit)");
@@ -180,6 +190,8 @@ struct MeshData {
 
 // The STL (binary or ASCII) or OBJ mesh file at path; no vertices if it cannot be read.
 inline MeshData read_mesh(const std::string& path) {
+  std::error_code not_regular;  // a regular file only: never a device or a pipe without end
+  if (!std::filesystem::is_regular_file(path, not_regular)) return {};
   std::ifstream in(path, std::ios::binary);
   if (!in) return {};
   const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -455,7 +467,6 @@ inline ImportedHand import_urdf(const XmlDocument& doc, const ImportOptions& opt
       shape.pose = to_pose(pose);
       if (s.name == "box") {
         const auto size = im.numbers(s, "size", 3);
-        if (size.empty()) im.fail(s, "<box> without size=");
         shape.type = ShapeType::box;
         shape.size = {0.5 * size[0], 0.5 * size[1], 0.5 * size[2]};
       } else if (s.name == "sphere") {
@@ -468,14 +479,31 @@ inline ImportedHand import_urdf(const XmlDocument& doc, const ImportOptions& opt
       } else if (s.name == "mesh") {
         if (!s.attribute("filename")) im.fail(s, "<mesh> without filename=");
         std::string f = *s.attribute("filename");
-        for (const std::string_view scheme : {"package://", "file://"})
-          if (f.rfind(scheme, 0) == 0) {
-            f = f.substr(scheme.size());
-            if (scheme == "package://") f = f.substr(std::min(f.size(), f.find('/') + 1));
+        namespace fs = std::filesystem;
+        fs::path dir = options.mesh_dir.empty() ? fs::path(doc.file).parent_path()
+                                                : fs::path(options.mesh_dir);
+        if (f.rfind("file://", 0) == 0) f = f.substr(7);
+        if (f.rfind("package://", 0) == 0) {
+          // package://PKG/REST: REST in the folder of package PKG, found as a folder called PKG
+          // at or above the URDF's (the ROS layout PKG/urdf/hand.urdf); else beside the URDF.
+          f = f.substr(10);
+          const std::string package = f.substr(0, f.find('/'));
+          f = f.substr(std::min(f.size(), f.find('/') + 1));
+          if (options.mesh_dir.empty()) {
+            std::error_code ec;
+            for (fs::path up = fs::absolute(dir, ec); !up.empty(); up = up.parent_path()) {
+              if (up.filename() == package) {
+                dir = up;
+                break;
+              }
+              if (fs::is_directory(up / package, ec)) {
+                dir = up / package;
+                break;
+              }
+              if (up == up.parent_path()) break;
+            }
           }
-        const std::filesystem::path dir = options.mesh_dir.empty()
-                                              ? std::filesystem::path(doc.file).parent_path()
-                                              : std::filesystem::path(options.mesh_dir);
+        }
         const auto sc = im.numbers(s, "scale", 3, {1, 1, 1});
         add_box_of_mesh(im, s, (dir / f).string(), Vec3(sc[0], sc[1], sc[2]), pose, link_name,
                         options.skip_missing_meshes, out);
@@ -483,7 +511,10 @@ inline ImportedHand import_urdf(const XmlDocument& doc, const ImportOptions& opt
       } else {
         im.fail(s, "unknown collision geometry (box, cylinder, sphere or mesh)");
       }
-      if (!(shape.size[0] > 0.0) || shape.size[1] < 0.0) im.fail(s, "its size must be > 0");
+      const auto& z = shape.size;
+      if (!(z[0] > 0.0) || !(z[1] >= 0.0) ||
+          (shape.type == ShapeType::box && !(z[1] > 0.0 && z[2] > 0.0)))
+        im.fail(s, "its size must be > 0");
       out.shapes.push_back(shape);
     }
     const auto& next = joints_of_parent[name];
@@ -515,7 +546,9 @@ struct MjcfContext {
   ImportOptions options;
   bool degrees = true;  // MJCF's default angle unit
   std::string eulerseq = "xyz";
-  std::string inertia_from_geoms = "auto";  // the compiler's inertiafromgeom
+  std::string inertia_from_geoms = "auto";     // the compiler's inertiafromgeom
+  bool autolimits = true;                      // the compiler's autolimits (MuJoCo 3's default)
+  std::array<double, 2> inertia_groups{0, 5};  // the compiler's inertiagrouprange
   std::filesystem::path mesh_dir;
   std::map<std::string, std::map<std::string, Attributes>> defaults;  // [class][element]
   std::map<std::string, std::pair<std::string, Vec3>> meshes;         // name -> (path, scale)
@@ -589,7 +622,9 @@ struct MjcfContext {
     const std::string* c = d.attribute("class");
     const std::string cls = c ? *c : (parent.empty() ? "main" : "");
     if (cls.empty()) im.fail(d, "a nested <default> needs class=");
-    auto inherited = parent.empty() ? std::map<std::string, Attributes>{} : defaults[parent];
+    // A second top-level <default> adds to "main", as in MuJoCo; a nested one starts from its
+    // parent.
+    auto inherited = parent.empty() ? defaults[cls] : defaults[parent];
     for (const XmlElement& k : d.children) {
       if (k.name == "default") continue;
       // The actuator shortcuts share one default.
@@ -659,7 +694,10 @@ struct MjcfContext {
           type == "hinge"
               ? revolute(ln, pn, to_pose(at_joint), {axis[0], axis[1], axis[2]}, -pi, pi)
               : prismatic(ln, pn, to_pose(at_joint), {axis[0], axis[1], axis[2]}, 0.0, 0.0);
-      const bool limited = a.count("range") && (!a.count("limited") || a.at("limited") != "false");
+      // MuJoCo 3's rule (the compiler's autolimits, default true): a range limits the joint unless
+      // limited="false"; with autolimits="false" only limited="true" does.
+      const std::string lim = a.count("limited") ? a.at("limited") : "auto";
+      const bool limited = a.count("range") && (lim == "true" || (lim != "false" && autolimits));
       if (limited) {
         const auto r = im.numbers(j, a, "range", 2);
         l.lower = type == "hinge" ? angle(r[0]) : r[0];
@@ -704,6 +742,8 @@ struct MjcfContext {
         const std::string n = im.name_of(c, "a site");
         out.frames.push_back(
             frame(std::string_view(n), link_name, to_pose(content * frame_of(c, a))));
+      } else if (c.name == "frame" || c.name == "replicate" || c.name == "attach") {
+        im.fail(c, "<" + c.name + "> (MuJoCo 3) is not supported: write its bodies out");
       } else if (c.name == "body") {
         read_body(c, std::string(link_name.view()), content * frame_of(c, resolved(c, "body", cls)),
                   cls, false);
@@ -745,8 +785,12 @@ struct MjcfContext {
         if (!(size[i] > 0.0)) im.fail(g, "its size must be > 0");
     };
     const double density = number("density", 1000.0);
+    const double group = number("group", 0.0);
+    const bool weighs = group >= inertia_groups[0] && group <= inertia_groups[1];
     const auto mass_of = [&](double volume, const Vec3& centre) {
-      return std::pair<double, Vec3>{a.count("mass") ? number("mass", 0.0) : density * volume,
+      return std::pair<double, Vec3>{!weighs           ? 0.0
+                                     : a.count("mass") ? number("mass", 0.0)
+                                                       : density * volume,
                                      centre};
     };
     ShapeSpec s;
@@ -818,16 +862,24 @@ struct MjcfContext {
 };
 
 inline ImportedHand import_mjcf(const XmlDocument& doc, const ImportOptions& options) {
-  MjcfContext cx{Importer{doc.file}, options, true, "xyz", "auto", {}, {}, {}, {}};
+  MjcfContext cx{Importer{doc.file}, options, true, "xyz", "auto", true, {0, 5}, {}, {}, {}, {}};
   const XmlElement& mj = doc.root;
   if (mj.name != "mujoco") cx.im.fail(mj, "an MJCF file's root element must be <mujoco>");
   cx.out.source = doc.file;
   cx.out.format = HandFileFormat::mjcf;
   const std::filesystem::path dir = std::filesystem::path(doc.file).parent_path();
   std::string meshdir;
+  {  // <include> anywhere: not supported (MuJoCo splices the file in; merge it by hand)
+    std::vector<const XmlElement*> stack{&mj};
+    while (!stack.empty()) {
+      const XmlElement* e = stack.back();
+      stack.pop_back();
+      if (e->name == "include")
+        cx.im.fail(*e, "<include> is not supported: merge the included file into this one");
+      for (const XmlElement& c : e->children) stack.push_back(&c);
+    }
+  }
   for (const XmlElement& e : mj.children) {
-    if (e.name == "include")
-      cx.im.fail(e, "<include> is not supported: merge the included file into this one");
     if (e.name != "compiler") continue;
     if (const std::string* a = e.attribute("angle")) {
       if (*a != "degree" && *a != "radian")
@@ -843,6 +895,11 @@ inline ImportedHand import_mjcf(const XmlDocument& doc, const ImportOptions& opt
     }
     if (const std::string* m = e.attribute("meshdir")) meshdir = *m;
     if (const std::string* g = e.attribute("inertiafromgeom")) cx.inertia_from_geoms = *g;
+    if (const std::string* l = e.attribute("autolimits")) cx.autolimits = *l != "false";
+    if (e.has("inertiagrouprange")) {
+      const auto r = cx.im.numbers(e, "inertiagrouprange", 2);
+      cx.inertia_groups = {r[0], r[1]};
+    }
   }
   cx.mesh_dir = options.mesh_dir.empty() ? dir / meshdir : std::filesystem::path(options.mesh_dir);
   cx.defaults["main"];
@@ -863,6 +920,7 @@ inline ImportedHand import_mjcf(const XmlDocument& doc, const ImportOptions& opt
   const XmlElement* world = child(mj, "worldbody");
   if (!world) cx.im.fail(mj, "no <worldbody>");
   const XmlElement* root = nullptr;
+  std::string root_class = "main";
   if (options.root.empty()) {
     std::string names;
     int count = 0;
@@ -877,19 +935,23 @@ inline ImportedHand import_mjcf(const XmlDocument& doc, const ImportOptions& opt
     if (count > 1)
       cx.im.fail(*world, "more than one top-level body (" + names + "): choose one with --root");
   } else {
-    std::vector<const XmlElement*> stack{world};
+    // Each body with the class its ancestors' childclass gives it.
+    std::vector<std::pair<const XmlElement*, std::string>> stack{{world, "main"}};
     while (!stack.empty() && !root) {
-      const XmlElement* e = stack.back();
+      const auto [e, cls] = stack.back();
       stack.pop_back();
       for (const XmlElement& c : e->children)
         if (c.name == "body") {
-          if (c.attribute("name") && *c.attribute("name") == options.root) root = &c;
-          stack.push_back(&c);
+          if (c.attribute("name") && *c.attribute("name") == options.root) {
+            root = &c;
+            root_class = cls;
+          }
+          stack.emplace_back(&c, c.attribute("childclass") ? *c.attribute("childclass") : cls);
         }
     }
     if (!root) cx.im.fail(*world, "no body called \"" + options.root + "\" (the root asked for)");
   }
-  cx.read_body(*root, "", Eigen::Isometry3d::Identity(), "main", true);
+  cx.read_body(*root, "", Eigen::Isometry3d::Identity(), root_class, true);
   ImportedHand& out = cx.out;
   // Fixed tendons: joint -> (tendon, coefficient).
   std::map<std::string, std::vector<std::pair<std::string, double>>> tendons;
@@ -927,8 +989,8 @@ inline ImportedHand import_mjcf(const XmlDocument& doc, const ImportOptions& opt
       for (const XmlElement& act : e.children) {
         const Attributes a = cx.resolved(act, "actuator", "main");
         const std::string label = act.attribute("name") ? *act.attribute("name") : act.name;
-        if (!a.count("forcerange") ||
-            (a.count("forcelimited") && a.at("forcelimited") == "false")) {
+        const std::string lim = a.count("forcelimited") ? a.at("forcelimited") : "auto";
+        if (!a.count("forcerange") || !(lim == "true" || (lim != "false" && cx.autolimits))) {
           out.notes.push_back("the actuator " + label +
                               " has no force range: its joint's effort is left 0");
           continue;
@@ -950,7 +1012,7 @@ inline ImportedHand import_mjcf(const XmlDocument& doc, const ImportOptions& opt
           const int i = out.link_of_joint(joint);
           if (i < 0) continue;  // a joint outside the imported part
           LinkSpec& l = out.links[static_cast<std::size_t>(i)];
-          l.effort = std::max(l.effort, std::abs(coef) * force);
+          l.effort += std::abs(coef) * force;  // actuators on one joint add up
         }
       }
   for (std::size_t i = 0; i < out.links.size(); ++i) {
@@ -963,8 +1025,10 @@ inline ImportedHand import_mjcf(const XmlDocument& doc, const ImportOptions& opt
   return out;
 }
 
-inline void append_number(std::string& s, double v) {
-  if (std::abs(v) < 1e-15) v = 0.0;
+// \p v in the shortest form that reads back exactly; \p clean: below 1e-15 written as 0 (the
+// rounding noise of rotations, not a size).
+inline void append_number(std::string& s, double v, bool clean = false) {
+  if (clean && std::abs(v) < 1e-15) v = 0.0;
   char b[32];
   const auto [end, ec] = std::to_chars(b, b + sizeof b, v);
   std::string t(b, ec == std::errc() ? end : b);
@@ -975,7 +1039,7 @@ inline void append_number(std::string& s, double v) {
 inline std::string pose_code(const Pose& p) {
   std::string s = "at(";
   for (std::size_t i = 0; i < 3; ++i) {
-    append_number(s, p.p[i]);
+    append_number(s, p.p[i], true);
     s += i < 2 ? ", " : ")";
   }
   const Eigen::Isometry3d T = p.isometry();
@@ -985,7 +1049,7 @@ inline std::string pose_code(const Pose& p) {
     s += ".quat(";
     const double c[4] = {q.w(), q.x(), q.y(), q.z()};
     for (int i = 0; i < 4; ++i) {
-      append_number(s, c[i]);
+      append_number(s, c[i], true);
       s += i < 3 ? ", " : ")";
     }
   }
@@ -1001,15 +1065,88 @@ inline std::string triple_code(const std::array<double, 3>& v) {
   return s;
 }
 
+// Refuses, naming the file and the link, shape or frame, what make_model() would refuse, so that
+// a header written from an import always compiles: empty, long or repeated names, a parent that
+// is not an earlier link, a joint axis of zero, limits that are not finite or in the wrong order,
+// a coupling to a joint that is fixed or itself coupled, numbers that are not finite or beyond
+// the model's ranges (from huge values in the file), shapes of non-positive size.
+inline void check_importable(const ImportedHand& h) {
+  const auto fail = [&](std::string_view what, const Name& name, std::string_view problem) {
+    throw import_error(h.source + ": " + std::string(what) + " \"" + std::string(name.view()) +
+                       "\": " + std::string(problem));
+  };
+  std::vector<std::string_view> names;
+  const auto add_name = [&](std::string_view what, const Name& n) {
+    if (n.empty()) fail(what, n, "an empty name");
+    const std::string_view v = n.view();
+    if (std::any_of(v.begin(), v.end(), [](char c) {
+          return c == '"' || c == '\\' || static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
+        }))
+      fail(what, n, "a quote, a backslash or a control character in the name");
+    if (std::find(names.begin(), names.end(), n.view()) != names.end())
+      fail(what, n, "a second link or frame of that name");
+    names.push_back(n.view());
+  };
+  const auto finite = [](std::initializer_list<double> v, double bound) {
+    return std::all_of(v.begin(), v.end(),
+                       [bound](double x) { return std::isfinite(x) && std::abs(x) < bound; });
+  };
+  for (std::size_t i = 0; i < h.links.size(); ++i) {
+    const LinkSpec& l = h.links[i];
+    add_name("link", l.name);
+    if ((i == 0) != l.parent.empty()) fail("link", l.name, "only the first link is the root");
+    if (i > 0 && std::find(names.begin(), names.end() - 1, l.parent.view()) == names.end() - 1)
+      fail("link", l.name, "its parent is not an earlier link");
+    const Pose& o = l.origin;
+    if (!finite({o.p[0], o.p[1], o.p[2], l.com[0], l.com[1], l.com[2]}, 1e6) ||
+        !finite({l.mass}, 1e6) || l.mass < 0.0)
+      fail("link", l.name, "its origin, mass or centre of mass is not finite or beyond 1e6");
+    if (l.type == JointType::fixed) continue;
+    if (!finite({l.axis[0], l.axis[1], l.axis[2]}, 1e300) ||
+        std::abs(l.axis[0]) + std::abs(l.axis[1]) + std::abs(l.axis[2]) < 1e-12)
+      fail("joint of link", l.name, "its axis is zero or not finite");
+    if (!finite({l.lower, l.upper, l.multiplier, l.offset}, 1e300) || l.lower > l.upper)
+      fail("joint of link", l.name, "its limits are not finite or lower is above upper");
+    if (!(l.effort >= 0.0 && l.effort < 1e9 && l.velocity >= 0.0 && l.velocity < 1e9 &&
+          l.armature >= 0.0 && l.armature < 1e9))
+      fail("joint of link", l.name, "its effort, velocity or armature is not in [0, 1e9)");
+    if (l.mimic.empty()) continue;
+    const auto source = std::find_if(h.links.begin(), h.links.end(),
+                                     [&](const LinkSpec& s) { return s.name == l.mimic; });
+    if (source == h.links.end() || source->type == JointType::fixed || !source->mimic.empty())
+      fail("joint of link", l.name, "it is coupled to a joint that is fixed or itself coupled");
+  }
+  for (const ShapeSpec& sh : h.shapes) {
+    const auto& z = sh.size;
+    const bool ok = finite({z[0], z[1], z[2], sh.pose.p[0], sh.pose.p[1], sh.pose.p[2]}, 1e6) &&
+                    (sh.type == ShapeType::box      ? (z[0] > 0.0 && z[1] > 0.0 && z[2] > 0.0)
+                     : sh.type == ShapeType::sphere ? z[0] > 0.0
+                                                    : (z[0] > 0.0 && z[1] >= 0.0));
+    if (!ok) fail("a shape of link", sh.link, "its size is not positive or it is not finite");
+  }
+  for (const FrameSpec& f : h.frames) {
+    add_name("frame", f.name);
+    if (!finite({f.offset.p[0], f.offset.p[1], f.offset.p[2]}, 1e6))
+      fail("frame", f.name, "its position is not finite or beyond 1e6");
+  }
+}
+
 }  // namespace detail
 
 /// Imports a URDF (<robot>) or MJCF (<mujoco>) document \p doc, read from the file doc.file.
+/// What it returns, make_model() accepts (with a hand description that names existing links).
 /// \throws topograsp::import_error naming the file, the line, the element and the problem, for
-/// anything the model cannot hold (the list in this file's comment).
+/// anything the model cannot hold (the list in this file's comment); or naming the file and the
+/// link, shape or frame for what make_model() would refuse (a name used twice, a coupling to a
+/// coupled joint, numbers beyond the model's ranges).
 [[nodiscard]] inline ImportedHand import_hand(const XmlDocument& doc,
                                               const ImportOptions& options = {}) {
-  if (doc.root.name == "robot") return detail::import_urdf(doc, options);
-  if (doc.root.name == "mujoco") return detail::import_mjcf(doc, options);
+  if (doc.root.name == "robot" || doc.root.name == "mujoco") {
+    ImportedHand hand = doc.root.name == "robot" ? detail::import_urdf(doc, options)
+                                                 : detail::import_mjcf(doc, options);
+    detail::check_importable(hand);
+    return hand;
+  }
   throw import_error(doc.file + ":" + std::to_string(doc.root.line) + ": <" + doc.root.name +
                      ">: neither a URDF file (<robot>) nor an MJCF file (<mujoco>)");
 }
@@ -1044,6 +1181,110 @@ inline std::string triple_code(const std::array<double, 3>& v) {
       ++i;
     }
   }
+  static constexpr std::array<std::string_view, 97> keywords{"alignas",
+                                                             "alignof",
+                                                             "and",
+                                                             "and_eq",
+                                                             "asm",
+                                                             "auto",
+                                                             "bitand",
+                                                             "bitor",
+                                                             "bool",
+                                                             "break",
+                                                             "case",
+                                                             "catch",
+                                                             "char",
+                                                             "char8_t",
+                                                             "char16_t",
+                                                             "char32_t",
+                                                             "class",
+                                                             "compl",
+                                                             "concept",
+                                                             "const",
+                                                             "consteval",
+                                                             "constexpr",
+                                                             "constinit",
+                                                             "const_cast",
+                                                             "continue",
+                                                             "co_await",
+                                                             "co_return",
+                                                             "co_yield",
+                                                             "decltype",
+                                                             "default",
+                                                             "delete",
+                                                             "do",
+                                                             "double",
+                                                             "dynamic_cast",
+                                                             "else",
+                                                             "enum",
+                                                             "explicit",
+                                                             "export",
+                                                             "extern",
+                                                             "false",
+                                                             "float",
+                                                             "for",
+                                                             "friend",
+                                                             "goto",
+                                                             "if",
+                                                             "inline",
+                                                             "int",
+                                                             "long",
+                                                             "mutable",
+                                                             "namespace",
+                                                             "new",
+                                                             "noexcept",
+                                                             "not",
+                                                             "not_eq",
+                                                             "nullptr",
+                                                             "operator",
+                                                             "or",
+                                                             "or_eq",
+                                                             "private",
+                                                             "protected",
+                                                             "public",
+                                                             "register",
+                                                             "reinterpret_cast",
+                                                             "requires",
+                                                             "return",
+                                                             "short",
+                                                             "signed",
+                                                             "sizeof",
+                                                             "static",
+                                                             "static_assert",
+                                                             "static_cast",
+                                                             "struct",
+                                                             "switch",
+                                                             "template",
+                                                             "this",
+                                                             "thread_local",
+                                                             "throw",
+                                                             "true",
+                                                             "try",
+                                                             "typedef",
+                                                             "typeid",
+                                                             "typename",
+                                                             "union",
+                                                             "unsigned",
+                                                             "using",
+                                                             "virtual",
+                                                             "void",
+                                                             "volatile",
+                                                             "wchar_t",
+                                                             "while",
+                                                             "xor",
+                                                             "xor_eq",
+                                                             "final",
+                                                             "override",
+                                                             "import",
+                                                             "module",
+                                                             "std"};
+  for (std::size_t i = 0, start = 0; ok && i <= ns.size(); ++i)
+    if (i == ns.size() || ns[i] == ':') {
+      const std::string_view id = ns.substr(start, i - start);
+      ok = std::find(keywords.begin(), keywords.end(), id) == keywords.end();
+      start = i + 2;
+      ++i;
+    }
   if (!ok)
     detail::throw_invalid_argument(
         "ns", "\"" + std::string(ns) + "\" is not a C++ namespace name (a::b)");
@@ -1065,7 +1306,10 @@ inline std::string triple_code(const std::array<double, 3>& v) {
   s += "// Generated by topograsp_import_hand from " +
        std::filesystem::path(hand.source).filename().string() + " (" +
        std::string(to_string(hand.format)) + "). Do not edit: edit the file and import it again.\n";
-  for (const std::string& n : hand.notes) s += "// Note: " + n + "\n";
+  for (std::string n : hand.notes) {
+    std::replace_if(n.begin(), n.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+    s += "// Note: " + n + "\n";
+  }
   s += "#pragma once\n\n#include <topograsp/model/spec.hpp>\n\nnamespace " + std::string(ns) +
        " {\n\nusing namespace topograsp;\n\n";
   s += "/// The links of " + std::filesystem::path(hand.source).filename().string() +

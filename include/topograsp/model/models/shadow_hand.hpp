@@ -40,8 +40,9 @@ inline constexpr auto shadow_links = [] {
                             : part == "middle"   ? thj2_torque
                                                  : thj1_torque;
       s = s.actuator(torque, part == "middle" ? finger_speed : thumb_speed, s.armature);
-      // THJ4 (into the palm) and THJ1 close; THJ5 turns the thumb, THJ3 and THJ2 side to side.
-      s = s.closes(part == "proximal" || part == "distal" ? 1.0 : 0.0);
+      // THJ4 (into the palm), THJ2 and THJ1 (flexions, their axes parallel at rest) close; THJ5
+      // turns the thumb about the palm, THJ3 (+-12 degrees) tilts it within THJ4's plane.
+      s = s.closes(part == "proximal" || part == "middle" || part == "distal" ? 1.0 : 0.0);
     } else {
       s = s.actuator(finger_torque, finger_speed, s.armature).closes(part == "knuckle" ? 0.0 : 1.0);
     }
