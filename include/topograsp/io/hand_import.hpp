@@ -48,6 +48,7 @@
 #include <topograsp/core/error.hpp>
 #include <topograsp/io/xml.hpp>
 #include <topograsp/model/spec.hpp>
+#include <topograsp/physics/mass_properties.hpp>
 
 namespace topograsp {
 
@@ -796,24 +797,18 @@ struct MjcfContext {
     ShapeSpec s;
     s.link = link;
     s.pose = to_pose(pose);
-    std::pair<double, Vec3> mass{0.0, pose.translation()};
     if (type == "sphere") {
       need(1);
       s.type = ShapeType::sphere;
       s.size = {size[0], 0.0, 0.0};
-      mass = mass_of(4.0 / 3.0 * pi * std::pow(size[0], 3), pose.translation());
     } else if (type == "capsule" || type == "cylinder") {
       need(half_from >= 0.0 ? 1 : 2);
       s.type = type == "capsule" ? ShapeType::capsule : ShapeType::cylinder;
       s.size = {size[0], half_from >= 0.0 ? half_from : size[1], 0.0};
-      const double r = s.size[0], h = s.size[1];
-      mass = mass_of(pi * r * r * 2.0 * h + (type == "capsule" ? 4.0 / 3.0 * pi * r * r * r : 0.0),
-                     pose.translation());
     } else if (type == "box") {
       need(3);
       s.type = ShapeType::box;
       s.size = {size[0], size[1], size[2]};
-      mass = mass_of(8.0 * size[0] * size[1] * size[2], pose.translation());
     } else if (type == "ellipsoid") {
       need(3);
       std::array<int, 3> order{0, 1, 2};
@@ -829,10 +824,13 @@ struct MjcfContext {
       s.type = half > 0.0 ? ShapeType::capsule : ShapeType::sphere;
       s.pose = to_pose(pose * turn);
       s.size = {r, std::max(half, 0.0), 0.0};
-      mass = mass_of(4.0 / 3.0 * pi * size[0] * size[1] * size[2], pose.translation());
-      if (collides)
+      if (collides) {
+        out.shapes.push_back(s);
         out.notes.push_back("an ellipsoid of link " + std::string(link.view()) +
                             " is approximated by the capsule around it");
+      }
+      // The ellipsoid's own volume, not its capsule's.
+      return mass_of(4.0 / 3.0 * pi * size[0] * size[1] * size[2], pose.translation());
     } else if (type == "mesh") {
       const std::string* m = a.count("mesh") ? &a.at("mesh") : nullptr;
       if (!m) im.fail(g, "a mesh geom without mesh=");
@@ -840,6 +838,7 @@ struct MjcfContext {
       if (it == meshes.end()) im.fail(g, "no mesh asset called \"" + *m + "\"");
       const auto& [path, scale] = it->second;
       const MeshData mesh = read_mesh(path);
+      std::pair<double, Vec3> mass{0.0, pose.translation()};
       if (!mesh.vertices.empty()) {
         const auto [volume, centroid] = mesh_volume(mesh, scale);
         mass = mass_of(volume, pose * centroid);
@@ -857,7 +856,8 @@ struct MjcfContext {
       return {0.0, Vec3::Zero()};
     }
     if (collides) out.shapes.push_back(s);
-    return mass;
+    // A primitive's volume: its mass properties at unit density (physics/mass_properties.hpp).
+    return mass_of(shape_mass_properties(s, 1.0).mass, pose.translation());
   }
 };
 
@@ -1297,7 +1297,8 @@ inline void check_importable(const ImportedHand& h) {
     q += '"';
     return q;
   };
-  std::string s;
+  // Generated code keeps the tool's layout: clang-format would join the comment lines.
+  std::string s = "// clang-format off\n";
   for (const std::string& c : comments) {
     std::string line = c;
     std::replace(line.begin(), line.end(), '\n', ' ');
