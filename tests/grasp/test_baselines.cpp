@@ -123,7 +123,7 @@ TEST_CASE("the virtual-finger mapping finds the opposition of the human grasp",
   CHECK(palm.planned);
   CHECK(palm.method == TransferMethod::virtual_finger);
   CHECK(palm.reason == "palm opposition");
-  CHECK_FALSE(palm.human_winding.has_value());  // a baseline aims at no winding
+  CHECK_FALSE(palm.source_winding.has_value());  // a baseline aims at no winding
   const Eigen::Isometry3d target = detail::sdh_grasp_target(wrap);
   CHECK(palm.hand_pose.linear().col(2).dot(target.linear().col(2)) == Approx(1.0));
   const auto [thumb, fingers] = detail::sdh_opposition(palm.q_open);
@@ -175,8 +175,8 @@ TEST_CASE("closing corrections keep the plan whose closed windings are nearest t
   const Vec2 y = g.descriptor.values;
   CHECK((corrected.winding - y).norm() <= (plain.winding - y).norm() + 1e-12);
   // Both record the human's windings, not the corrected targets they planned toward.
-  CHECK(plain.human_winding == y);
-  CHECK(corrected.human_winding == y);
+  CHECK(plain.source_winding == y);
+  CHECK(corrected.source_winding == y);
   // The variant is the topological method with two corrections.
   CHECK(transfer_method_options(TransferMethod::closed_windings, TransferOptions{})
             .closing_corrections == 2);

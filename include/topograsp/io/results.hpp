@@ -340,7 +340,7 @@ inline void check_scene_names(const ExperimentOptions& options) {
     r.set("stable", t.stable());
     r.set("scene", t.planned ? Json(scene_path(object.name, g.id, to_string(t.method))) : Json());
     // The human's y around the point of winding_robot (topological: its winding reference).
-    r.set("winding_human", detail::json_vector(t.human_winding.value_or(g.descriptor.values)));
+    r.set("winding_human", detail::json_vector(t.source_winding.value_or(g.descriptor.values)));
     r.set("winding_robot", detail::json_vector(t.winding));
     r.set("plan_ms", t.plan_ms);
     r.set("sweeps", t.sweeps);

@@ -1,0 +1,293 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The transfer matrix (issue 15, docs/results.md "Any hand to any hand"): the human demonstrations
+// of the paper's experiment transferred to the SDH, the Barrett, the Allegro, the LEAP and the
+// Shadow hand on a free base, and two robot -> robot pairs (SDH -> Allegro, Allegro -> Shadow,
+// from the stable topological transfers of the same demonstrations), by each method, each grasp
+// judged by the built-in stepper and, where MuJoCo is linked, by MuJoCo.
+//
+//   transfer_matrix [--objects hammer,bottle] [--methods topological,paper,transplant]
+//                   [--max-hypotheses N] [--seed S] [--jobs N] [--out DIR] [--quiet]
+//
+// Writes DIR/matrix.json and DIR/matrix.md (each atomically: a temporary file, then a rename).
+// Bad arguments: a message naming the option on stderr, exit status 2, nothing computed.
+#include <algorithm>
+#include <atomic>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <span>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <vector>
+
+#include <topograsp/evaluation/statistics.hpp>
+#include <topograsp/grasp/any_hand.hpp>
+#include <topograsp/grasp/experiment.hpp>
+#include <topograsp/io/command_line.hpp>
+#include <topograsp/io/detail/svg_text.hpp>
+#include <topograsp/io/json.hpp>
+#include <topograsp/model/models/allegro_hand.hpp>
+#include <topograsp/model/models/leap_hand.hpp>
+#include <topograsp/model/models/shadow_hand.hpp>
+#ifdef TOPOGRASP_HAVE_MUJOCO
+#include <topograsp/io/mujoco_scene.hpp>
+#endif
+
+namespace {
+
+using namespace topograsp;
+
+struct Options {
+  std::vector<std::string> objects{"hammer", "bottle"};
+  std::vector<TransferMethod> methods{TransferMethod::topological, TransferMethod::paper,
+                                      TransferMethod::transplant};
+  int max_hypotheses = 0;  // 0: all
+  std::uint64_t seed = 1;
+  int jobs = 2;
+  std::string out = "matrix";
+  bool quiet = false;
+};
+
+constexpr std::string_view usage =
+    "usage: transfer_matrix [--objects hammer,bottle] [--methods topological,paper,transplant]\n"
+    "                       [--max-hypotheses N] [--seed S] [--jobs N] [--out DIR] [--quiet]\n"
+    "Transfers the human demonstrations of the paper's experiment to the SDH, Barrett, Allegro,\n"
+    "LEAP and Shadow hands, and SDH -> Allegro, Allegro -> Shadow; writes DIR/matrix.json and\n"
+    "DIR/matrix.md (default DIR: matrix). Methods: topological and its variants but\n"
+    "closed_windings, and transplant (docs/transfer.md, \"Any hand\").\n";
+
+Options parse(std::span<char*> args) {
+  Options o;
+  std::map<std::string, bool> seen;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string_view a = args[i];
+    if (a == "--help" || a == "-h") {
+      std::fputs(usage.data(), stdout);
+      std::exit(0);
+    }
+    if (a == "--quiet") {
+      o.quiet = true;
+      continue;
+    }
+    if (a != "--objects" && a != "--methods" && a != "--max-hypotheses" && a != "--seed" &&
+        a != "--jobs" && a != "--out")
+      throw invalid_argument("unknown option " + detail::quote_argument(a) +
+                             " (--help lists them)");
+    if (seen[std::string(a)]) detail::throw_invalid_argument(a, "given twice");
+    seen[std::string(a)] = true;
+    if (i + 1 == args.size() || std::string_view(args[i + 1]).starts_with("--") ||
+        std::string_view(args[i + 1]).empty())
+      detail::throw_invalid_argument(a, "expected a value");
+    const std::string_view v = args[++i];
+    if (a == "--objects") {
+      o.objects.clear();
+      for (const std::string_view n : detail::split_cli_list(v, a, objects::names(), "object"))
+        o.objects.emplace_back(n);
+    } else if (a == "--methods") {
+      std::vector<std::string> known;
+      for (const TransferMethod m : all_transfer_methods)
+        if (any_hand_method(m)) known.emplace_back(to_string(m));
+      o.methods.clear();
+      for (const std::string_view n : detail::split_cli_list(v, a, known, "method"))
+        o.methods.push_back(transfer_method(n));
+    } else if (a == "--max-hypotheses") {
+      o.max_hypotheses = detail::parse_cli_number<int>(v, a);
+      if (o.max_hypotheses < 0) detail::throw_invalid_argument(a, "expected >= 0");
+    } else if (a == "--seed") {
+      o.seed = detail::parse_cli_number<std::uint64_t>(v, a);
+    } else if (a == "--jobs") {
+      o.jobs = detail::parse_cli_number<int>(v, a);
+      if (o.jobs < 1 || o.jobs > max_command_line_jobs)
+        detail::throw_invalid_argument(a, "expected 1 to " + std::to_string(max_command_line_jobs));
+    } else {
+      o.out = std::string(v);
+    }
+  }
+  return o;
+}
+
+// The verdicts of one cell of the matrix: a source -> target pair, an object, a method.
+struct Cell {
+  int tested = 0, planned = 0, stable = 0, stable_second = 0;
+  bool second = false;  // a second judge ran
+};
+using Key = std::tuple<std::string, std::string, std::string>;  // pair, object, method
+
+// One transfer's verdicts into a task's list (pair, object, method, result).
+struct Record {
+  std::string pair, object, method;
+  bool planned = false, stable = false, stable_second = false, second = false;
+};
+
+template <const auto& M>
+SecondJudge<M> mujoco_judge() {
+#ifdef TOPOGRASP_HAVE_MUJOCO
+  return [](const HandScene<M>& scene, const StabilityOptions& o) {
+    return stability_suite(MujocoScene(scene), o);
+  };
+#else
+  return {};
+#endif
+}
+
+template <const auto& M>
+Record record(std::string pair, const std::string& object, const HandTransfer<M>& t) {
+  return {std::move(pair),     object,     std::string(to_string(t.method)),
+          t.planned,           t.stable(), t.planned && t.second && t.second->stable,
+          t.second.has_value()};
+}
+
+// Every transfer of one demonstration: human -> each hand, then the robot -> robot pairs from the
+// stable (built-in) transfers of the first method.
+std::vector<Record> transfer_all(const GraspObject& object, const HumanGrasp& g, const Options& o,
+                                 const TransferOptions& options) {
+  std::vector<Record> out;
+  const auto human = source_grasp(g);
+  const auto to = [&] < const auto & T,
+             const auto & S > (const std::string& pair, const HandGrasp<S>& source) {
+               std::vector<HandTransfer<T>> ts;
+               for (const TransferMethod m : o.methods) {
+                 ts.push_back(transfer_hand<T>(m, object, source, options, mujoco_judge<T>()));
+                 out.push_back(record(pair, object.name, ts.back()));
+               }
+               return ts;
+             };
+  const auto sdh = to.template operator()<models::schunk_sdh>("human -> SDH", human);
+  (void)to.template operator()<models::barrett_bh8>("human -> Barrett", human);
+  const auto allegro = to.template operator()<models::allegro_hand>("human -> Allegro", human);
+  (void)to.template operator()<models::leap_hand>("human -> LEAP", human);
+  (void)to.template operator()<models::shadow_hand>("human -> Shadow", human);
+  if (sdh.front().stable())
+    (void)to.template operator()<models::allegro_hand>("SDH -> Allegro", source_grasp(sdh.front()));
+  if (allegro.front().stable())
+    (void)to.template operator()<models::shadow_hand>("Allegro -> Shadow",
+                                                      source_grasp(allegro.front()));
+  return out;
+}
+
+std::string rate(int k, int n) {
+  if (n == 0) return "-";
+  const RateInterval ci = wilson_interval(k, n);
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%d/%d = %.0f %% [%.0f, %.0f]", k, n, 100.0 * k / n,
+                100.0 * ci.lower, 100.0 * ci.upper);
+  return buf;
+}
+
+Json interval_json(int k, int n) {
+  const RateInterval ci = wilson_interval(k, n);
+  return Json::array().push_back(ci.lower).push_back(ci.upper);
+}
+
+int run(const Options& o) {
+  std::vector<GraspObject> objs;
+  for (const std::string& n : o.objects) objs.push_back(*objects::find(n));
+  std::vector<std::pair<std::size_t, int>> tasks;
+  std::vector<std::vector<GraspHypothesis>> hyps;
+  for (std::size_t oi = 0; oi < objs.size(); ++oi) {
+    hyps.push_back(box_hypotheses(objs[oi]));
+    for (int i = 0; i < static_cast<int>(hyps.back().size()); ++i)
+      if (o.max_hypotheses == 0 || i < o.max_hypotheses) tasks.emplace_back(oi, i);
+  }
+  const TransferOptions base;
+  std::vector<std::vector<Record>> records(tasks.size());
+  std::vector<bool> demonstrated(tasks.size());
+  std::mutex say;
+  std::atomic<int> done{0};
+  detail::parallel_for(static_cast<int>(tasks.size()), o.jobs, [&](int k) {
+    const auto [oi, id] = tasks[static_cast<std::size_t>(k)];
+    TransferOptions options = base;
+    options.sim.stability.seed = grasp_seed(o.seed, objs[oi].name, id);
+    const HumanGrasp g =
+        demonstrate(objs[oi], hyps[oi][static_cast<std::size_t>(id)], id, options.sim);
+    demonstrated[static_cast<std::size_t>(k)] = g.stable();
+    if (g.stable()) records[static_cast<std::size_t>(k)] = transfer_all(objs[oi], g, o, options);
+    if (!o.quiet) {
+      const std::lock_guard lock(say);
+      std::fprintf(stderr, "[%s] hypothesis %d done (%d/%zu)\n", objs[oi].name.c_str(), id, ++done,
+                   tasks.size());
+    }
+  });
+  std::map<Key, Cell> cells;
+  std::vector<Key> order;  // first appearance: pairs in transfer_all's order
+  for (const auto& rs : records)
+    for (const Record& r : rs) {
+      const Key key{r.pair, r.object, r.method};
+      if (!cells.contains(key)) order.push_back(key);
+      Cell& c = cells[key];
+      ++c.tested;
+      c.planned += r.planned;
+      c.stable += r.stable;
+      c.stable_second += r.stable_second;
+      c.second = c.second || r.second;
+    }
+  // Grouped by pair (in transfer_all's order), then objects and methods as they came.
+  std::vector<std::string> pairs;
+  for (const Key& k : order)
+    if (std::find(pairs.begin(), pairs.end(), std::get<0>(k)) == pairs.end())
+      pairs.push_back(std::get<0>(k));
+  std::stable_sort(order.begin(), order.end(), [&](const Key& a, const Key& b) {
+    return std::find(pairs.begin(), pairs.end(), std::get<0>(a)) <
+           std::find(pairs.begin(), pairs.end(), std::get<0>(b));
+  });
+  Json cell_list = Json::array();
+  std::string md =
+      "| source -> target | object | method | tested | planned | stable (built-in) | stable "
+      "(MuJoCo) |\n|---|---|---|---|---|---|---|\n";
+  for (const Key& key : order) {
+    const Cell& c = cells[key];
+    const auto& [pair, object, method] = key;
+    md += "| " + pair + " | " + object + " | " + method + " | " + std::to_string(c.tested) + " | " +
+          std::to_string(c.planned) + " | " + rate(c.stable, c.tested) + " | " +
+          (c.second ? rate(c.stable_second, c.tested) : std::string("-")) + " |\n";
+    Json j = Json::object();
+    j.set("pair", pair);
+    j.set("object", object);
+    j.set("method", method);
+    j.set("tested", c.tested);
+    j.set("planned", c.planned);
+    j.set("stable", c.stable);
+    j.set("interval", interval_json(c.stable, c.tested));
+    if (c.second) {
+      j.set("stable_second", c.stable_second);
+      j.set("interval_second", interval_json(c.stable_second, c.tested));
+    }
+    cell_list.push_back(std::move(j));
+  }
+  int stable_demos = 0;
+  for (const bool d : demonstrated) stable_demos += d;
+  Json doc = Json::object();
+  doc.set("generator", "topograsp transfer_matrix");
+  doc.set("seed", static_cast<double>(o.seed));
+  doc.set("hypotheses", static_cast<int>(tasks.size()));
+  doc.set("demonstrations", stable_demos);
+  doc.set("second_judge", cells.empty() || cells.begin()->second.second ? "mujoco" : "none");
+  doc.set("cells", std::move(cell_list));
+  std::filesystem::create_directories(o.out);
+  detail::write_text_file(std::filesystem::path(o.out) / "matrix.json", doc.dump() + "\n");
+  detail::write_text_file(std::filesystem::path(o.out) / "matrix.md", md);
+  std::fputs(md.c_str(), stdout);
+  std::printf("%d hypotheses, %d stable demonstrations; wrote %s/matrix.json and matrix.md\n",
+              static_cast<int>(tasks.size()), stable_demos, o.out.c_str());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  try {
+    o = parse(std::span<char*>(argv + 1, static_cast<std::size_t>(argc - 1)));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "transfer_matrix: %s\n%s", e.what(), usage.data());
+    return 2;
+  }
+  try {
+    return run(o);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "transfer_matrix: %s\n", e.what());
+    return 1;
+  }
+}

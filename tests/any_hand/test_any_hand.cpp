@@ -1,0 +1,165 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Any hand to any hand (grasp/any_hand.hpp): hand profiles, the frame two hands meet in, the
+// winding targets of a hand with more or fewer curves than the source, transfer_hand on an
+// imported hand from the human hand and from the SDH, and what it does with bad input.
+#include <cmath>
+#include <limits>
+
+#include <catch2/catch.hpp>
+
+#include <topograsp/grasp/any_hand.hpp>
+#include <topograsp/model/models/allegro_hand.hpp>
+
+using namespace topograsp;
+
+namespace {
+
+// The first stable human demonstration on the bottle (cached: the tests share it).
+const HumanGrasp& bottle_demonstration() {
+  static const HumanGrasp g = [] {
+    const GraspObject bottle = objects::bottle();
+    const auto hyps = box_hypotheses(bottle);
+    for (std::size_t i = 0; i < hyps.size(); ++i) {
+      HumanGrasp d = demonstrate(bottle, hyps[i], static_cast<int>(i));
+      if (d.stable()) return d;
+    }
+    return HumanGrasp{};
+  }();
+  return g;
+}
+
+}  // namespace
+
+TEST_CASE("winding targets: the k largest source windings, the smallest repeated beyond them",
+          "[any_hand]") {
+  Eigen::VectorXd w(4);
+  w << 0.3, 1.2, 0.7, 0.9;
+  CHECK(winding_targets<2>(w) == Vec2(1.2, 0.9));  // the paper's descriptor
+  CHECK(winding_targets<4>(w) == Vec<4>(1.2, 0.9, 0.7, 0.3));
+  Eigen::VectorXd two(2);
+  two << 0.4, 0.8;
+  CHECK(winding_targets<3>(two) == Vec3(0.8, 0.4, 0.4));
+  CHECK_THROWS_WITH(winding_targets<2>(Eigen::VectorXd()), Catch::Contains("windings"));
+  two[1] = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_WITH(winding_targets<2>(two), Catch::Contains("windings"));
+}
+
+TEST_CASE("hand profiles: the SDH keeps its pre-shape rule, other hands open against closing",
+          "[any_hand]") {
+  const auto sdh = hand_profile<models::schunk_sdh>();
+  CHECK(sdh.frame == models::schunk_sdh.find_frame("grasp_centre"));
+  CHECK(sdh.opening == (Vec<7>() << 0, -1, 1, -1, 1, -1, 1).finished());
+  const auto allegro = hand_profile<models::allegro_hand>();
+  CHECK(allegro.frame == models::allegro_hand.find_frame("palm_centre"));
+  CHECK(allegro.opening == -closing_directions<models::allegro_hand>());
+  // The transplant pre-shape: the SDH's as transplant_preshape always made it; any hand's within
+  // its limits however far it is asked to open.
+  TransferOptions options;
+  CHECK(opened_preshape<models::schunk_sdh>(0.7, options.sdh_preshape) ==
+        (Vec<7>() << 0, -0.7, 0.7, -0.7, 0.7, -0.7, 0.7).finished());
+  const Vec<16> q = opened_preshape<models::allegro_hand>(5.0, Vec<16>::Zero());
+  CHECK((q.array() >= lower_limits<models::allegro_hand>().array()).all());
+  CHECK((q.array() <= upper_limits<models::allegro_hand>().array()).all());
+}
+
+TEST_CASE("two hands meet in one frame: root_for_grasp_frame undoes grasp_frame", "[any_hand]") {
+  Eigen::Isometry3d root = Eigen::Isometry3d::Identity();
+  root.linear() = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  root.translation() = Vec3(0.1, -0.2, 0.05);
+  const Vec<16> q = Vec<16>::Constant(0.3);
+  const HandGrasp<models::allegro_hand> a{root, clamp_to_limits<models::allegro_hand>(q)};
+  const Eigen::Isometry3d back = root_for_grasp_frame<models::allegro_hand>(grasp_frame(a), a.q);
+  CHECK((back.matrix() - root.matrix()).norm() < 1e-12);
+  // The meeting frame's z is the hand's approach: for the Allegro its palm centre's +z.
+  KinematicsData<models::allegro_hand> d;
+  forward_kinematics(d, a.q);
+  const Vec3 palm_z =
+      root.linear() * frame_pose(d, models::allegro_hand.frame("palm_centre")).linear().col(2);
+  CHECK((grasp_frame(a).linear().col(2) - palm_z).norm() < 1e-12);
+  // The human's: its palm normal (human_hand_axes.approach), from its grasp centre.
+  const HumanGrasp& g = bottle_demonstration();
+  REQUIRE(g.stable());
+  KinematicsData<models::human_hand> h;
+  forward_kinematics(h, g.q);
+  const Eigen::Isometry3d gc =
+      g.hand_pose * frame_pose(h, models::human_hand.frame("grasp_centre"));
+  const Eigen::Isometry3d meet = grasp_frame(source_grasp(g));
+  CHECK((meet.translation() - gc.translation()).norm() < 1e-12);
+  CHECK((meet.linear().col(2) - gc.linear() * human_hand_axes.approach).norm() < 1e-12);
+}
+
+TEST_CASE(
+    "human -> Allegro: the topological plan moves the windings toward the human's three "
+    "largest, and the grasp is judged",
+    "[any_hand][transfer]") {
+  const GraspObject bottle = objects::bottle();
+  const HumanGrasp& g = bottle_demonstration();
+  REQUIRE(g.stable());
+  const auto r =
+      transfer_hand<models::allegro_hand>(TransferMethod::topological, bottle, source_grasp(g));
+  INFO(r.reason);
+  REQUIRE(r.planned);
+  REQUIRE(r.source_winding.has_value());
+  Eigen::VectorXd human(4);
+  human = g.windings;
+  // The human's windings as demonstrate() took them (free base) and as transfer_hand takes them
+  // (the palm pose): equal to rounding.
+  CHECK((*r.source_winding - winding_targets<3>(human)).norm() < 1e-9);
+  REQUIRE(r.winding_plan.size() >= 2);
+  const Vec3 y = *r.source_winding;
+  CHECK((r.winding_plan.back() - y).norm() < (r.winding_plan.front() - y).norm());
+  CHECK(r.sweeps > 0);
+  CHECK(r.stability.weight > 0.0);  // judged: the suite weighed the object
+  CHECK((r.q_open.array() >= lower_limits<models::allegro_hand>().array()).all());
+  CHECK((r.q_open.array() <= upper_limits<models::allegro_hand>().array()).all());
+  // The transplant baseline aims at no winding and plans nothing.
+  const auto t =
+      transfer_hand<models::allegro_hand>(TransferMethod::transplant, bottle, source_grasp(g));
+  CHECK(t.method == TransferMethod::transplant);
+  CHECK_FALSE(t.source_winding.has_value());
+  CHECK(t.sweeps == 0);
+}
+
+TEST_CASE("SDH -> Allegro: a robot grasp is a source; two SDH curves give three targets",
+          "[any_hand][transfer]") {
+  const GraspObject bottle = objects::bottle();
+  const HumanGrasp& g = bottle_demonstration();
+  REQUIRE(g.stable());
+  const RobotGrasp sdh = transfer(TransferMethod::transplant, bottle, g, TransferOptions{});
+  REQUIRE(sdh.planned);
+  const auto r =
+      transfer_hand<models::allegro_hand>(TransferMethod::topological, bottle, source_grasp(sdh));
+  INFO(r.reason);
+  REQUIRE(r.source_winding.has_value());
+  const Vec2 w =
+      hand_windings<models::schunk_sdh>(bottle.centre_of_mass(), sdh.hand_pose, sdh.q_closed);
+  const double hi = w.maxCoeff(), lo = w.minCoeff();
+  CHECK(*r.source_winding == Vec3(hi, lo, lo));
+}
+
+TEST_CASE("transfer_hand: bad input is refused with a reason or an exception naming it",
+          "[any_hand][errors]") {
+  const GraspObject bottle = objects::bottle();
+  const HumanGrasp& g = bottle_demonstration();
+  REQUIRE(g.stable());
+  auto source = source_grasp(g);
+  source.root.translation().x() = std::numeric_limits<double>::infinity();
+  for (const TransferMethod m : {TransferMethod::topological, TransferMethod::transplant}) {
+    const auto r = transfer_hand<models::allegro_hand>(m, bottle, source);
+    CHECK_FALSE(r.planned);
+    CHECK(r.reason == "the source hand pose is not finite");
+  }
+  source = source_grasp(g);
+  source.q[3] = std::numeric_limits<double>::quiet_NaN();
+  CHECK(transfer_hand<models::allegro_hand>(TransferMethod::topological, bottle, source).reason ==
+        "the source configuration is not finite");
+  for (const TransferMethod m :
+       {TransferMethod::fingertip, TransferMethod::virtual_finger, TransferMethod::closed_windings})
+    CHECK_THROWS_WITH(transfer_hand<models::allegro_hand>(m, bottle, source_grasp(g)),
+                      Catch::StartsWith("method: ") && Catch::Contains(std::string(to_string(m))));
+  TransferOptions bad;
+  bad.backoff = -1.0;
+  CHECK_THROWS_WITH(transfer_hand<models::allegro_hand>(TransferMethod::topological, bottle,
+                                                        source_grasp(g), bad),
+                    Catch::Contains("backoff"));
+}
