@@ -10,8 +10,21 @@ add_test(NAME "example: grasp_transfer (small run)"
 add_test(NAME "example: render_grasp" COMMAND render_grasp --out ${CMAKE_CURRENT_BINARY_DIR}/render-out)
 # Bad input: a clear message on stderr naming the option, and exit status 2 (nothing computed).
 # Each case is "name|arguments separated by spaces|regex that stderr must match".
+function(expect_rejected program)
+  foreach(case IN LISTS ARGN)
+    string(REPLACE "|" ";" parts "${case}")
+    list(GET parts 0 name)
+    list(GET parts 1 args)
+    list(GET parts 2 expect)
+    string(REPLACE " " ";" args "${args}")
+    add_test(NAME "example: ${program} rejects ${name}"
+             COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:${program}>;${args}"
+                     "-DEXPECT=${expect}" -DSTATUS=2
+                     -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
+  endforeach()
+endfunction()
 set(bad ${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_bad)
-foreach(case IN ITEMS "unknown object|--objects anvil|--objects: unknown object \"anvil\""
+expect_rejected(grasp_transfer "unknown object|--objects anvil|--objects: unknown object \"anvil\""
                       "unknown method|--methods teleport|--methods: unknown method \"teleport\""
                       "duplicate object|--objects hammer,hammer|--objects: \"hammer\" is given twice"
                       "duplicate method|--methods topological,topological|--methods: \"topological\" is given twice"
@@ -34,15 +47,6 @@ foreach(case IN ITEMS "unknown object|--objects anvil|--objects: unknown object 
                       "merge without shards|merge --out x|merge: expected the shards' output folders"
                       "merge with a run option|merge --jobs 2 x|--jobs: not an option of merge"
                       "merge of a folder without a run|merge --out ${bad}-m /proc|merge: \"/proc\" holds no results.json of grasp_transfer")
-  string(REPLACE "|" ";" parts "${case}")
-  list(GET parts 0 name)
-  list(GET parts 1 args)
-  list(GET parts 2 expect)
-  string(REPLACE " " ";" args "${args}")
-  add_test(NAME "example: grasp_transfer rejects ${name}"
-           COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:grasp_transfer>;${args}"
-                   "-DEXPECT=${expect}" -DSTATUS=2 -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
-endforeach()
 # Output folders that are refused before any work (exit 2), each prepared by the test.
 add_test(NAME "example: grasp_transfer rejects results.json that is a folder"
          COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:grasp_transfer>;--quiet;--out;${bad}-a"
@@ -73,3 +77,18 @@ add_test(NAME "example: slurm job scripts"
          COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:grasp_transfer>
                  -DDIR=${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_slurm
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/slurm/run_locally.cmake)
+# The transfer matrix (docs/results.md): a small run, one stable bottle demonstration to every
+# hand by the transplant baseline; bad arguments refused.
+add_test(NAME "example: transfer_matrix (small run)"
+         COMMAND transfer_matrix --objects bottle --max-hypotheses 6 --methods transplant --quiet
+                 --out ${CMAKE_CURRENT_BINARY_DIR}/transfer_matrix_small)
+set_tests_properties("example: transfer_matrix (small run)" PROPERTIES
+                     PASS_REGULAR_EXPRESSION "human -> Allegro \\| bottle \\| transplant \\| 1 \\|")
+expect_rejected(transfer_matrix "unknown object|--objects anvil|--objects: unknown object \"anvil\""
+                "an SDH-only method|--methods fingertip|--methods: unknown method \"fingertip\""
+                "a repeated option|--jobs 2 --jobs 2|--jobs: given twice"
+                "a missing value|--out|--out: expected a value"
+                "bad jobs|--jobs 0|--jobs: expected 1 to 1024"
+                "negative hypotheses|--max-hypotheses -1|--max-hypotheses: expected >= 0"
+                "unknown option|--hand allegro|unknown option \"--hand\""
+                "unwritable out|--out /proc/transfer_matrix|--out: cannot create the folder")

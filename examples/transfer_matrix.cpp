@@ -8,12 +8,15 @@
 //   transfer_matrix [--objects hammer,bottle] [--methods topological,paper,transplant]
 //                   [--max-hypotheses N] [--seed S] [--jobs N] [--out DIR] [--quiet]
 //
-// Writes DIR/matrix.json and DIR/matrix.md (each atomically: a temporary file, then a rename).
-// Bad arguments: a message naming the option on stderr, exit status 2, nothing computed.
+// Writes DIR/matrix.json, DIR/matrix.md and the results page DIR/index.html (each atomically: a
+// temporary file, then a rename). Bad arguments: a message naming the option on stderr, exit status
+// 2, nothing computed.
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <span>
@@ -27,6 +30,7 @@
 #include <topograsp/grasp/experiment.hpp>
 #include <topograsp/io/command_line.hpp>
 #include <topograsp/io/detail/svg_text.hpp>
+#include <topograsp/io/html_page.hpp>
 #include <topograsp/io/json.hpp>
 #include <topograsp/model/models/allegro_hand.hpp>
 #include <topograsp/model/models/leap_hand.hpp>
@@ -54,8 +58,9 @@ constexpr std::string_view usage =
     "usage: transfer_matrix [--objects hammer,bottle] [--methods topological,paper,transplant]\n"
     "                       [--max-hypotheses N] [--seed S] [--jobs N] [--out DIR] [--quiet]\n"
     "Transfers the human demonstrations of the paper's experiment to the SDH, Barrett, Allegro,\n"
-    "LEAP and Shadow hands, and SDH -> Allegro, Allegro -> Shadow; writes DIR/matrix.json and\n"
-    "DIR/matrix.md (default DIR: matrix). Methods: topological and its variants but\n"
+    "LEAP and Shadow hands, and SDH -> Allegro, Allegro -> Shadow; writes DIR/matrix.json,\n"
+    "DIR/matrix.md and DIR/index.html (default DIR: matrix). Methods: topological and its variants "
+    "but\n"
     "closed_windings, and transplant (docs/transfer.md, \"Any hand\").\n";
 
 Options parse(std::span<char*> args) {
@@ -105,13 +110,22 @@ Options parse(std::span<char*> args) {
       o.out = std::string(v);
     }
   }
+  // The output folder first: a run that cannot write its results does not start.
+  std::error_code ec;
+  std::filesystem::create_directories(o.out, ec);
+  if (ec || !std::filesystem::is_directory(o.out))
+    detail::throw_invalid_argument("--out", "cannot create the folder " +
+                                                detail::quote_argument(o.out) +
+                                                (ec ? " (" + ec.message() + ")" : std::string()));
   return o;
 }
 
 // The verdicts of one cell of the matrix: a source -> target pair, an object, a method.
 struct Cell {
   int tested = 0, planned = 0, stable = 0, stable_second = 0;
-  bool second = false;  // a second judge ran
+  bool second = false;                  // a second judge ran
+  std::map<std::string, int> failures;  // why not stable (built-in), how often
+  std::vector<double> winding_errors;   // topological: max |w closed - target|
 };
 using Key = std::tuple<std::string, std::string, std::string>;  // pair, object, method
 
@@ -119,6 +133,8 @@ using Key = std::tuple<std::string, std::string, std::string>;  // pair, object,
 struct Record {
   std::string pair, object, method;
   bool planned = false, stable = false, stable_second = false, second = false;
+  std::string failure;  // empty if stable: "not planned: <reason>" or the first failed test
+  double winding_error = std::numeric_limits<double>::quiet_NaN();
 };
 
 template <const auto& M>
@@ -134,9 +150,39 @@ SecondJudge<M> mujoco_judge() {
 
 template <const auto& M>
 Record record(std::string pair, const std::string& object, const HandTransfer<M>& t) {
-  return {std::move(pair),     object,     std::string(to_string(t.method)),
-          t.planned,           t.stable(), t.planned && t.second && t.second->stable,
-          t.second.has_value()};
+  Record r{std::move(pair),
+           object,
+           std::string(to_string(t.method)),
+           t.planned,
+           t.stable(),
+           t.planned && t.second && t.second->stable,
+           t.second.has_value(),
+           {},
+           std::numeric_limits<double>::quiet_NaN()};
+  if (!t.planned)
+    r.failure = "not planned: " + t.reason;
+  else if (!t.stable())
+    r.failure = "unstable: " + t.stability.reason.substr(0, t.stability.reason.find(':'));
+  if (t.planned && t.source_winding)
+    r.winding_error = (t.winding - *t.source_winding).cwiseAbs().maxCoeff();
+  return r;
+}
+
+// The median of v (NaN if empty).
+double median(std::vector<double> v) {
+  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// The most frequent failure of a cell and its count ("-" if none).
+std::string top_failure(const Cell& c) {
+  const auto it =
+      std::max_element(c.failures.begin(), c.failures.end(),
+                       [](const auto& a, const auto& b) { return a.second < b.second; });
+  return it == c.failures.end() ? std::string("-")
+                                : it->first + " (" + std::to_string(it->second) + ")";
 }
 
 // Every transfer of one demonstration: human -> each hand, then the robot -> robot pairs from the
@@ -222,6 +268,8 @@ int run(const Options& o) {
       c.stable += r.stable;
       c.stable_second += r.stable_second;
       c.second = c.second || r.second;
+      if (!r.failure.empty()) ++c.failures[r.failure];
+      if (!std::isnan(r.winding_error)) c.winding_errors.push_back(r.winding_error);
     }
   // Grouped by pair (in transfer_all's order), then objects and methods as they came.
   std::vector<std::string> pairs;
@@ -233,15 +281,28 @@ int run(const Options& o) {
            std::find(pairs.begin(), pairs.end(), std::get<0>(b));
   });
   Json cell_list = Json::array();
+  HtmlPage page;
+  page.title = "topograsp: the transfer matrix";
+  page.header = {"source -> target", "object",        "method",
+                 "tested",           "planned",       "stable (built-in)",
+                 "stable (MuJoCo)",  "winding error", "most frequent failure"};
   std::string md =
       "| source -> target | object | method | tested | planned | stable (built-in) | stable "
-      "(MuJoCo) |\n|---|---|---|---|---|---|---|\n";
+      "(MuJoCo) | winding error | most frequent failure |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const Key& key : order) {
     const Cell& c = cells[key];
     const auto& [pair, object, method] = key;
+    const double we = median(c.winding_errors);
+    char werr[32] = "-";
+    if (!std::isnan(we)) std::snprintf(werr, sizeof werr, "%.2f", we);
     md += "| " + pair + " | " + object + " | " + method + " | " + std::to_string(c.tested) + " | " +
           std::to_string(c.planned) + " | " + rate(c.stable, c.tested) + " | " +
-          (c.second ? rate(c.stable_second, c.tested) : std::string("-")) + " |\n";
+          (c.second ? rate(c.stable_second, c.tested) : std::string("-")) + " | " + werr + " | " +
+          top_failure(c) + " |\n";
+    page.rows.push_back({pair, object, method, std::to_string(c.tested), std::to_string(c.planned),
+                         rate(c.stable, c.tested),
+                         c.second ? rate(c.stable_second, c.tested) : std::string("-"), werr,
+                         top_failure(c)});
     Json j = Json::object();
     j.set("pair", pair);
     j.set("object", object);
@@ -250,6 +311,10 @@ int run(const Options& o) {
     j.set("planned", c.planned);
     j.set("stable", c.stable);
     j.set("interval", interval_json(c.stable, c.tested));
+    Json failures = Json::object();
+    for (const auto& [why, n] : c.failures) failures.set(why, n);
+    j.set("failures", std::move(failures));
+    if (!std::isnan(we)) j.set("winding_error_median", we);
     if (c.second) {
       j.set("stable_second", c.stable_second);
       j.set("interval_second", interval_json(c.stable_second, c.tested));
@@ -265,12 +330,21 @@ int run(const Options& o) {
   doc.set("demonstrations", stable_demos);
   doc.set("second_judge", cells.empty() || cells.begin()->second.second ? "mujoco" : "none");
   doc.set("cells", std::move(cell_list));
-  std::filesystem::create_directories(o.out);
+  char intro[256];
+  std::snprintf(intro, sizeof intro,
+                "Seed %llu: %d grasp hypotheses, %d stable human demonstrations. Rates with 95 %% "
+                "Wilson intervals; robot -> robot rows start from the stable topological transfers "
+                "(docs/results.md).",
+                static_cast<unsigned long long>(o.seed), static_cast<int>(tasks.size()),
+                stable_demos);
+  page.intro = intro;
+  write_html_page((std::filesystem::path(o.out) / "index.html").string(), page);
   detail::write_text_file(std::filesystem::path(o.out) / "matrix.json", doc.dump() + "\n");
   detail::write_text_file(std::filesystem::path(o.out) / "matrix.md", md);
   std::fputs(md.c_str(), stdout);
-  std::printf("%d hypotheses, %d stable demonstrations; wrote %s/matrix.json and matrix.md\n",
-              static_cast<int>(tasks.size()), stable_demos, o.out.c_str());
+  std::printf(
+      "%d hypotheses, %d stable demonstrations; wrote %s/matrix.json, matrix.md and index.html\n",
+      static_cast<int>(tasks.size()), stable_demos, o.out.c_str());
   return 0;
 }
 
