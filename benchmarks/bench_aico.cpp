@@ -2,7 +2,8 @@
 // AICO sweeps for the 14-DOF arm + SDH in dynamic mode, T = 100: the message algebra alone, the
 // same algebra written the straightforward way with dynamic-size Eigen matrices (the baseline),
 // a full sweep with the transfer task set (collision, limits, posture, windings), a whole plan,
-// one topological grasp transfer as the experiment runs it, and the machine's Eigen GEMM rate
+// one topological grasp transfer as the experiment runs it (to the SDH on the arm, and to the
+// Allegro hand on a free base as transfer_matrix runs it), and the machine's Eigen GEMM rate
 // measured in the same run.
 #include <benchmark/benchmark.h>
 
@@ -10,8 +11,10 @@
 #include <cstdio>
 #include <ctime>
 #include <topograsp/aico.hpp>
+#include <topograsp/grasp/any_hand.hpp>
 #include <topograsp/grasp/transfer.hpp>
 #include <topograsp/model/models.hpp>
+#include <topograsp/model/models/allegro_hand.hpp>
 
 #include "../tests/aico/wrap_scene.hpp"
 
@@ -229,6 +232,25 @@ void BM_transfer_topological_hammer(benchmark::State& state) {
   state.counters["sweeps"] = sweeps;
 }
 BENCHMARK(BM_transfer_topological_hammer)->Unit(benchmark::kMillisecond);
+
+// The same human grasp transferred to the Allegro hand on a free base (transfer_hand: 22
+// coordinates, three winding targets, the same T and sweeps), as transfer_matrix runs it.
+void BM_transfer_hand_topological_allegro(benchmark::State& state) {
+  const GraspObject hammer = objects::hammer();
+  const HumanGrasp g = demonstrate(hammer, box_hypotheses(hammer)[26], 26);
+  double plan_ms = 0.0;
+  int sweeps = 0;
+  for (auto _ : state) {
+    const auto r =
+        transfer_hand<models::allegro_hand>(TransferMethod::topological, hammer, source_grasp(g));
+    plan_ms = r.plan_ms;
+    sweeps = r.sweeps;
+    benchmark::DoNotOptimize(r.stability.stable);
+  }
+  state.counters["plan ms"] = plan_ms;
+  state.counters["sweeps"] = sweeps;
+}
+BENCHMARK(BM_transfer_hand_topological_allegro)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
