@@ -9,6 +9,7 @@
 
 #include <topograsp/grasp/any_hand.hpp>
 #include <topograsp/model/models/allegro_hand.hpp>
+#include <topograsp/model/models/shadow_hand.hpp>
 
 using namespace topograsp;
 
@@ -60,6 +61,39 @@ TEST_CASE("hand profiles: the SDH keeps its pre-shape rule, other hands open aga
   const Vec<16> q = opened_preshape<models::allegro_hand>(5.0, Vec<16>::Zero());
   CHECK((q.array() >= lower_limits<models::allegro_hand>().array()).all());
   CHECK((q.array() <= upper_limits<models::allegro_hand>().array()).all());
+}
+
+TEST_CASE("the start pre-shape turns a thumb that opposes by a turn, and only that", "[any_hand]") {
+  constexpr auto& s = models::shadow_hand;
+  const TransferOptions options;
+  const Vec<s.nq> zero = clamp_to_limits<s>(Vec<s.nq>::Zero());
+  const Vec<s.nq> q = base_preshape<s>(options);
+  // Only THJ5 and THJ3 (rh_thbase, rh_thhub: the thumb turns, no closing direction) move.
+  for (int i = 0; i < s.nq; ++i) {
+    CAPTURE(s.joint_name(i));
+    const std::string_view n = s.joint_name(i);
+    if (n != "rh_thbase" && n != "rh_thhub") CHECK(q[i] == zero[i]);
+  }
+  CHECK(q != zero);
+  CHECK((q.array() >= lower_limits<s>().array()).all());
+  CHECK((q.array() <= upper_limits<s>().array()).all());
+  // Closed, its thumb tip comes nearer the other tips than with the thumb unturned.
+  const auto gap = [](const Vec<s.nq>& x) {
+    KinematicsData<s> d;
+    forward_kinematics(d, closed_targets<s>(x));
+    const auto tip = [&](std::size_t f) {
+      return world_point(d, s.fingers[f].points[static_cast<std::size_t>(s.fingers[f].size - 1)]);
+    };
+    Vec3 c = Vec3::Zero();
+    for (std::size_t f = 0; f < s.fingers.size(); ++f)
+      if (static_cast<int>(f) != s.thumb) c += tip(f);
+    return (tip(static_cast<std::size_t>(s.thumb)) - c / 4.0).norm();
+  };
+  CHECK(gap(q) < gap(zero));
+  // Hands that oppose through their closing joints keep their zero.
+  CHECK(base_preshape<models::allegro_hand>(options) ==
+        clamp_to_limits<models::allegro_hand>(Vec<16>::Zero()));
+  CHECK(base_preshape<models::schunk_sdh>(options) == options.sdh_preshape);
 }
 
 TEST_CASE("two hands meet in one frame: root_for_grasp_frame undoes grasp_frame", "[any_hand]") {

@@ -101,6 +101,61 @@ template <const auto& M>
   return clamp_to_limits<M>(q);
 }
 
+/// \p q with the thumb of hand \p M turned to oppose the fingers: each joint that moves the thumb's
+/// tip, moves no other fingertip and has no closing direction (a thumb's turn about the palm, such
+/// as the Shadow hand's THJ5 and THJ3) set, on a grid of 41 values over its range and twice in
+/// turn, to the value at which the thumb tip comes nearest the centroid of the other fingertips
+/// when every closing joint is at its closed limit (closed_targets): the hand's own opposition. A
+/// hand whose thumb opposes through its closing joints (the SDH, the Barrett, the Allegro, the
+/// LEAP hand) keeps \p q.
+template <const auto& M>
+  requires HandModel<decltype(M)>
+[[nodiscard]] Vec<M.nq> opposed_thumb(Vec<M.nq> q) {
+  const Vec<M.nq> dir = closing_directions<M>(), lo = lower_limits<M>(), hi = upper_limits<M>();
+  const auto tip = [](std::size_t f) {
+    const Finger& finger = M.fingers[f];
+    return finger.points[static_cast<std::size_t>(finger.size - 1)];
+  };
+  const auto moves = [](int link, int entry) {
+    for (const SupportJoint& j : M.support(link))
+      if (j.q == entry) return true;
+    return false;
+  };
+  const auto thumb = static_cast<std::size_t>(M.thumb);
+  std::vector<int> turns;
+  for (int i = 0; i < M.nq; ++i) {
+    if (dir[i] != 0.0 || !moves(tip(thumb).link, i)) continue;
+    bool other = false;
+    for (std::size_t f = 0; f < M.fingers.size(); ++f)
+      other = other || (f != thumb && moves(tip(f).link, i));
+    if (!other) turns.push_back(i);
+  }
+  KinematicsData<M> d;
+  const auto gap = [&](const Vec<M.nq>& x) {
+    forward_kinematics(d, closed_targets<M>(x));
+    Vec3 centroid = Vec3::Zero();
+    for (std::size_t f = 0; f < M.fingers.size(); ++f)
+      if (f != thumb) centroid += world_point(d, tip(f));
+    centroid /= static_cast<double>(M.fingers.size() - 1);
+    return (world_point(d, tip(thumb)) - centroid).norm();
+  };
+  for (int round = 0; round < 2; ++round)
+    for (const int i : turns) {
+      double best = gap(q), value = q[i];
+      for (int k = 0; k <= 40; ++k) {
+        Vec<M.nq> x = q;
+        x[i] = lo[i] + (hi[i] - lo[i]) * k / 40.0;
+        const double g = gap(x);
+        if (g < best) {
+          best = g;
+          value = x[i];
+        }
+      }
+      q[i] = value;
+    }
+  return q;
+}
+
 /// A grasp of hand \p M transferred from another hand: where the hand ended (object frame), how it
 /// was planned, the stability suite. RobotGrasp (transfer.hpp) is the SDH's.
 template <const auto& M>

@@ -194,14 +194,14 @@ inline void validate_transfer_parameters(const TransferOptions& options) {
 }
 
 /// The joints hand \p M starts a transfer from: the SDH's options.sdh_preshape, any other hand's
-/// zero clamped to its joint limits.
+/// zero clamped to its joint limits with its thumb turned to oppose the fingers (opposed_thumb).
 template <const auto& M>
   requires HandModel<decltype(M)>
 [[nodiscard]] Vec<M.nq> base_preshape(const TransferOptions& options) {
   if constexpr (M.nq == 7) {
     if (M.name.view() == models::schunk_sdh.name.view()) return options.sdh_preshape;
   }
-  return clamp_to_limits<M>(Vec<M.nq>::Zero());
+  return opposed_thumb<M>(clamp_to_limits<M>(Vec<M.nq>::Zero()));
 }
 
 /// A grasp transferred to the SDH (HandTransfer of the SDH: its 7 joints, its two curves).
