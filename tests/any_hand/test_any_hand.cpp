@@ -2,6 +2,8 @@
 // Any hand to any hand (grasp/any_hand.hpp): hand profiles, the frame two hands meet in, the
 // winding targets of a hand with more or fewer curves than the source, transfer_hand on an
 // imported hand from the human hand and from the SDH, and what it does with bad input.
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -171,6 +173,77 @@ TEST_CASE("SDH -> Allegro: a robot grasp is a source; two SDH curves give three 
   CHECK(*r.source_winding == Vec3(hi, lo, lo));
 }
 
+TEST_CASE("the fingertip correspondence: thumb to thumb, the fingers spread, each used once",
+          "[any_hand]") {
+  // Human fingers: index 0, middle 1, ring 2, little 3, thumb 4.
+  using A3 = std::array<int, 3>;
+  using A4 = std::array<int, 4>;
+  using A5 = std::array<int, 5>;
+  // The SDH (finger 1, finger 2, thumb): the index and the ring, as Table I's fingertip mapping.
+  STATIC_REQUIRE(fingertip_correspondence<models::schunk_sdh, models::human_hand>() == A3{0, 2, 4});
+  STATIC_REQUIRE(fingertip_correspondence<models::barrett_bh8, models::human_hand>() ==
+                 A3{0, 2, 4});
+  // The Allegro (index, middle, ring, thumb) and the Shadow hand (index ... little, thumb).
+  STATIC_REQUIRE(fingertip_correspondence<models::allegro_hand, models::human_hand>() ==
+                 A4{0, 1, 2, 4});
+  STATIC_REQUIRE(fingertip_correspondence<models::shadow_hand, models::human_hand>() ==
+                 A5{0, 1, 2, 3, 4});
+  // More target fingers than source fingers: the extra ones are left out of the fit.
+  STATIC_REQUIRE(fingertip_correspondence<models::allegro_hand, models::schunk_sdh>() ==
+                 A4{0, -1, 1, 2});
+  STATIC_REQUIRE(fingertip_correspondence<models::shadow_hand, models::allegro_hand>() ==
+                 A5{0, -1, 1, 2, 3});
+  STATIC_REQUIRE(fingertip_count<models::allegro_hand, models::schunk_sdh> == 3);
+  // The SDH/human size ratio of Table I (digits from their first own link out to the tip).
+  CHECK(fingertip_scale<models::schunk_sdh, models::human_hand>() == Approx(2.175).epsilon(2e-3));
+  CHECK(fingertip_scale<models::human_hand, models::schunk_sdh>() ==
+        Approx(1.0 / 2.175).epsilon(2e-3));
+}
+
+TEST_CASE(
+    "human -> Allegro by the fingertip and virtual-finger mappings: planned, judged, the "
+    "tips on their targets",
+    "[any_hand][transfer][baselines]") {
+  const GraspObject bottle = objects::bottle();
+  const HumanGrasp& g = bottle_demonstration();
+  REQUIRE(g.stable());
+  const auto tips = fingertip_targets<models::allegro_hand>(bottle, source_grasp(g));
+  STATIC_REQUIRE(tips.size() == 4);
+  // Each target lies out of the object by the Allegro's tip radius and the contact gap.
+  const Composite shape = bottle.composite();
+  const GraspSimOptions sim;
+  for (const Vec3& p : tips) {
+    double distance = std::numeric_limits<double>::infinity();
+    for (const Primitive& part : shape.parts())
+      distance = std::min(distance, signed_distance(part, Primitive::sphere(p, 1e-9)).distance);
+    CHECK(distance == Approx(0.012 + sim.contact_gap).margin(1e-6));
+  }
+  const auto f =
+      transfer_hand<models::allegro_hand>(TransferMethod::fingertip, bottle, source_grasp(g));
+  INFO(f.reason);
+  REQUIRE(f.planned);
+  CHECK(f.method == TransferMethod::fingertip);
+  CHECK_FALSE(f.source_winding.has_value());
+  CHECK(f.stability.weight > 0.0);
+  CHECK((f.q_open.array() >= lower_limits<models::allegro_hand>().array()).all());
+  CHECK((f.q_open.array() <= upper_limits<models::allegro_hand>().array()).all());
+  const auto v =
+      transfer_hand<models::allegro_hand>(TransferMethod::virtual_finger, bottle, source_grasp(g));
+  INFO(v.reason);
+  REQUIRE(v.planned);
+  CHECK((v.reason == "pad opposition" || v.reason == "palm opposition"));
+  CHECK(v.stability.weight > 0.0);
+  // Palm opposition: the Allegro placed as the transplant, its approach the human's.
+  if (v.reason == "palm opposition") {
+    constexpr auto& a = models::allegro_hand;
+    KinematicsData<a> d;
+    forward_kinematics(d, v.q_open);
+    const Vec3 approach =
+        v.hand_pose.linear() * (d.frame_R[a.frame("palm_centre")] * Vec3::UnitZ());
+    CHECK(approach.dot(grasp_frame(source_grasp(g)).linear().col(2)) == Approx(1.0).margin(1e-9));
+  }
+}
+
 TEST_CASE("transfer_hand: bad input is refused with a reason or an exception naming it",
           "[any_hand][errors]") {
   const GraspObject bottle = objects::bottle();
@@ -178,7 +251,8 @@ TEST_CASE("transfer_hand: bad input is refused with a reason or an exception nam
   REQUIRE(g.stable());
   auto source = source_grasp(g);
   source.root.translation().x() = std::numeric_limits<double>::infinity();
-  for (const TransferMethod m : {TransferMethod::topological, TransferMethod::transplant}) {
+  for (const TransferMethod m : {TransferMethod::topological, TransferMethod::transplant,
+                                 TransferMethod::fingertip, TransferMethod::virtual_finger}) {
     const auto r = transfer_hand<models::allegro_hand>(m, bottle, source);
     CHECK_FALSE(r.planned);
     CHECK(r.reason == "the source hand pose is not finite");
@@ -187,10 +261,16 @@ TEST_CASE("transfer_hand: bad input is refused with a reason or an exception nam
   source.q[3] = std::numeric_limits<double>::quiet_NaN();
   CHECK(transfer_hand<models::allegro_hand>(TransferMethod::topological, bottle, source).reason ==
         "the source configuration is not finite");
-  for (const TransferMethod m :
-       {TransferMethod::fingertip, TransferMethod::virtual_finger, TransferMethod::closed_windings})
-    CHECK_THROWS_WITH(transfer_hand<models::allegro_hand>(m, bottle, source_grasp(g)),
-                      Catch::StartsWith("method: ") && Catch::Contains(std::string(to_string(m))));
+  CHECK_THROWS_WITH(
+      transfer_hand<models::allegro_hand>(TransferMethod::closed_windings, bottle, source_grasp(g)),
+      Catch::StartsWith("method: ") && Catch::Contains("closed_windings"));
+  // A fingertip fit whose targets are far out of the hand's reach is refused, not reported.
+  TransferOptions far;
+  far.fingertip_scale = 1e10;
+  const auto unreached =
+      transfer_hand<models::allegro_hand>(TransferMethod::fingertip, bottle, source_grasp(g), far);
+  CHECK_FALSE(unreached.planned);
+  CHECK_THAT(unreached.reason, Catch::Contains("did not reach the targets"));
   TransferOptions bad;
   bad.backoff = -1.0;
   CHECK_THROWS_WITH(transfer_hand<models::allegro_hand>(TransferMethod::topological, bottle,

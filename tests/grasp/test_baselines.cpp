@@ -126,7 +126,10 @@ TEST_CASE("the virtual-finger mapping finds the opposition of the human grasp",
   CHECK_FALSE(palm.source_winding.has_value());  // a baseline aims at no winding
   const Eigen::Isometry3d target = detail::sdh_grasp_target(wrap);
   CHECK(palm.hand_pose.linear().col(2).dot(target.linear().col(2)) == Approx(1.0));
-  const auto [thumb, fingers] = detail::sdh_opposition(palm.q_open);
+  constexpr auto& sdh = models::schunk_sdh;
+  KinematicsData<sdh> sd;
+  forward_kinematics(sd, palm.q_open);
+  const auto [thumb, fingers] = detail::opposition<sdh>(sd);
   const double chord =
       detail::chord_length(hammer.composite(), target.translation(), target.linear().col(0));
   // At least the chord and the margin (opened further only to clear the object).
@@ -147,7 +150,8 @@ TEST_CASE("the virtual-finger mapping finds the opposition of the human grasp",
   const Vec3 human = 0.25 * (at(h.frame("index_tip")) + at(h.frame("middle_tip")) +
                              at(h.frame("ring_tip")) + at(h.frame("pinky_tip"))) -
                      at(h.frame("thumb_tip"));
-  const auto [t2, f2] = detail::sdh_opposition(pad.q_open);
+  forward_kinematics(sd, pad.q_open);
+  const auto [t2, f2] = detail::opposition<sdh>(sd);
   CHECK((pad.hand_pose.linear() * (f2 - t2)).normalized().dot(human.normalized()) ==
         Approx(1.0).margin(1e-9));
 }

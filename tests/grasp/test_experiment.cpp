@@ -256,7 +256,7 @@ TEST_CASE("each method on a hand-picked hammer grasp", "[grasp][transfer]") {
   CHECK(transplant.stable());
   // The fingertip mapping scales the human tips by the ratio of the digits' lengths: the SDH's
   // thumb, finger 1 and finger 2 (0.1715 m each) against the human thumb, index and ring.
-  CHECK(detail::sdh_human_scale() == Approx(2.175).epsilon(2e-3));
+  CHECK((fingertip_scale<models::schunk_sdh, models::human_hand>()) == Approx(2.175).epsilon(2e-3));
   const RobotGrasp fingertip = transfer_fingertip(hammer, g, options);
   CHECK(fingertip.planned);
   for (const StabilityRecord& t : fingertip.stability.tests) {

@@ -34,12 +34,12 @@ template <int K>
   return y;
 }
 
-/// The methods transfer_hand() runs: the topological method, its named variants but
-/// closed_windings (paper, paper_line, paper_approach, no_windings, nearest_point), and the
-/// transplant baseline.
+/// The methods transfer_hand() runs: every method of the fair experiment but closed_windings
+/// (which needs the SDH on the arm): the topological method, its named variants (paper,
+/// paper_line, paper_approach, no_windings, nearest_point), and the transplant, fingertip and
+/// virtual-finger baselines.
 [[nodiscard]] constexpr bool any_hand_method(TransferMethod m) noexcept {
-  return m != TransferMethod::fingertip && m != TransferMethod::virtual_finger &&
-         m != TransferMethod::closed_windings;
+  return m != TransferMethod::closed_windings;
 }
 
 namespace detail {
@@ -53,9 +53,14 @@ using FreeTopologicalTasks =
 
 /// Transfers \p source, a grasp of hand \p Source on \p object, to hand \p Target on a free
 /// base, by \p method:
-/// - transplant: Target's grasp frame at the source's (grasp_frame: the same point, approach and
-///   up), its joints at opened_preshape(options.transplant_opening, base_preshape), backed off
-///   along its approach only as far as needed to clear the object, closed until contact;
+/// - transplant (transplant_grasp): Target's grasp frame at the source's (grasp_frame: the same
+///   point, approach and up), its joints at opened_preshape(options.transplant_opening,
+///   base_preshape), backed off along its approach only as far as needed to clear the object,
+///   closed until contact;
+/// - fingertip (fingertip_grasp): Target's fingertips fitted to the source's, scaled and put on the
+///   object's surface (fingertip_correspondence says which tip goes where);
+/// - virtual_finger (virtual_finger_grasp): Target's thumb opposes the centroid of its other
+///   fingertips along and across the source's palm or pad opposition;
 /// - topological and its variants (transfer_method_options): the source's windings around the
 ///   winding reference (the centre of mass, or the object's point nearest the source's grasp
 ///   frame) become Target's winding targets (winding_targets); AICO plans Target on its free base
@@ -67,9 +72,8 @@ using FreeTopologicalTasks =
 ///
 /// A source grasp that is not finite, a plan that makes no progress, or a hand that cannot be
 /// placed clear of the object gives an unplanned result (planned false) whose reason says why.
-/// \throws topograsp::invalid_argument naming "method" for fingertip, virtual_finger and
-/// closed_windings (SDH-only: transfer()), and as validate_transfer_parameters for options out of
-/// range.
+/// \throws topograsp::invalid_argument naming "method" for closed_windings (the SDH on the arm
+/// only: transfer()), and as validate_transfer_parameters for options out of range.
 template <const auto& Target, const auto& Source>
   requires HandModel<decltype(Target)> && HandModel<decltype(Source)>
 [[nodiscard]] HandTransfer<Target> transfer_hand(TransferMethod method, const GraspObject& object,
@@ -78,12 +82,16 @@ template <const auto& Target, const auto& Source>
                                                  const SecondJudge<Target>& second = {}) {
   if (!any_hand_method(method))
     detail::throw_invalid_argument(
-        "method",
-        "transfer_hand runs topological, its variants but closed_windings, and "
-        "transplant; " +
-            std::string(to_string(method)) + " is the SDH's only (transfer())");
+        "method", "transfer_hand runs every method but closed_windings; " +
+                      std::string(to_string(method)) + " needs the SDH on the arm (transfer())");
   validate_transfer_parameters(given);
   const TransferOptions options = transfer_method_options(method, given);
+  if (method == TransferMethod::transplant)
+    return transplant_grasp<Target>(object, source, options, second);
+  if (method == TransferMethod::fingertip)
+    return fingertip_grasp<Target>(object, source, options, second);
+  if (method == TransferMethod::virtual_finger)
+    return virtual_finger_grasp<Target>(object, source, options, second);
   constexpr int K = hand_curve_count<Target>;
   constexpr auto& F = FreeBase<Target>::model;
   const auto t0 = detail::Clock::now();
@@ -95,38 +103,15 @@ template <const auto& Target, const auto& Source>
   const Vec3 approach = meet.linear().col(2);
   const Vec<Target.nq> pre =
       opened_preshape<Target>(options.transplant_opening, base_preshape<Target>(options));
-  const Eigen::Isometry3d transplant = root_for_grasp_frame<Target>(meet, pre);
-  const auto finish = [&](const Eigen::Isometry3d& root, const Vec<Target.nq>& q, double advance) {
-    const auto placed =
-        place_hand_at_contact<Target>(object, root, q, approach, options.sim, advance);
-    r.plan_ms = detail::ms_since(t0);
-    if (!placed) {
-      r.reason = "the hand cannot be placed clear of the object";
-      return;
-    }
-    const std::string unusable = unusable_hand_pose<Target>(*placed, q);
-    if (!unusable.empty()) {
-      r.reason = unusable;
-      return;
-    }
-    r.planned = true;
-    simulate_hand_grasp<Target>(object, *placed, q, options.sim, second, r);
-  };
-  if (method == TransferMethod::transplant)
-    return transplant_grasp<Target>(object, source, options, second);
   // The topological method: the source's windings, the start clear of the object.
   const Vec3 reference =
-      options.winding_reference == WindingReference::centre_of_mass
-          ? object.centre_of_mass()
-          : [&] {
-              const Contact c = detail::nearest_surface(object.composite(), meet.translation());
-              return c.distance > 0.0 ? c.point_a : Vec3(meet.translation());
-            }();
+      winding_reference_point(object, meet.translation(), options.winding_reference);
   const Vec<hand_curve_count<Source>> source_w =
       hand_windings<Source>(reference, source.root, source.q);
   const Vec<K> y = winding_targets<K>(source_w);
   r.source_winding = y;
-  const auto clear = place_hand_at_contact<Target>(object, transplant, pre, approach, options.sim);
+  const auto clear = place_hand_at_contact<Target>(object, root_for_grasp_frame<Target>(meet, pre),
+                                                   pre, approach, options.sim);
   if (!clear) {
     r.plan_ms = detail::ms_since(t0);
     r.reason = "the start cannot be placed clear of the object";
@@ -167,15 +152,21 @@ template <const auto& Target, const auto& Source>
   const Eigen::Isometry3d root = link_pose(dt, F.find_link(Target.links[0].spec.name.view()));
   const Vec<Target.nq> q_hand =
       clamp_to_limits<Target>(Vec<Target.nq>(plan.q.back().template tail<Target.nq>()));
-  const std::string termination = r.reason;
-  finish(root, q_hand, options.final_approach);
-  if (r.planned) {
-    r.reason = termination;
-    if (options.winding_reference != WindingReference::centre_of_mass)
-      r.winding = hand_windings<Target>(reference, r.hand_pose, r.q_closed);
-  } else if (r.reason == "the hand cannot be placed clear of the object") {
+  const auto placed = place_hand_at_contact<Target>(object, root, q_hand, approach, options.sim,
+                                                    options.final_approach);
+  r.plan_ms = detail::ms_since(t0);
+  if (!placed) {
     r.reason = "the planned hand penetrates the object";
+    return r;
   }
+  if (std::string unusable = unusable_hand_pose<Target>(*placed, q_hand); !unusable.empty()) {
+    r.reason = std::move(unusable);
+    return r;
+  }
+  r.planned = true;  // r.reason keeps the planner's termination
+  simulate_hand_grasp<Target>(object, *placed, q_hand, options.sim, second, r);
+  if (options.winding_reference != WindingReference::centre_of_mass)
+    r.winding = hand_windings<Target>(reference, r.hand_pose, r.q_closed);
   return r;
 }
 

@@ -101,6 +101,13 @@ template <const auto& M>
   return clamp_to_limits<M>(q);
 }
 
+/// The tip of finger \p f of hand \p M: the last point of its chain (a point of a link).
+template <const auto& M>
+[[nodiscard]] constexpr LinkPoint finger_tip(int f) {
+  const Finger& finger = M.fingers[static_cast<std::size_t>(f)];
+  return finger.points[static_cast<std::size_t>(finger.size - 1)];
+}
+
 /// \p q with the thumb of hand \p M turned to oppose the fingers: each joint that moves the thumb's
 /// tip, moves no other fingertip and has no closing direction (a thumb's turn about the palm, such
 /// as the Shadow hand's THJ5 and THJ3) set, on a grid of 41 values over its range and twice in
@@ -112,10 +119,7 @@ template <const auto& M>
   requires HandModel<decltype(M)>
 [[nodiscard]] Vec<M.nq> opposed_thumb(Vec<M.nq> q) {
   const Vec<M.nq> dir = closing_directions<M>(), lo = lower_limits<M>(), hi = upper_limits<M>();
-  const auto tip = [](std::size_t f) {
-    const Finger& finger = M.fingers[f];
-    return finger.points[static_cast<std::size_t>(finger.size - 1)];
-  };
+  const auto tip = [](std::size_t f) { return finger_tip<M>(static_cast<int>(f)); };
   const auto moves = [](int link, int entry) {
     for (const SupportJoint& j : M.support(link))
       if (j.q == entry) return true;

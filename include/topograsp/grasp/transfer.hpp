@@ -226,38 +226,6 @@ inline Eigen::Isometry3d sdh_root_for_grasp_centre(const Eigen::Isometry3d& T) {
   return root_for_grasp_frame<models::schunk_sdh>(T, Vec<7>::Zero());
 }
 
-// The length (m) of a digit of M held straight (q = 0): the distances between the link origins
-// from link `first` out to frame `tip`.
-template <const auto& M>
-double digit_length(int first, int tip) {
-  KinematicsData<M> d;
-  forward_kinematics(d, Vec<M.nq>::Zero());
-  Vec3 p = d.frame_p[static_cast<std::size_t>(tip)];
-  int l = M.frames[static_cast<std::size_t>(tip)].link;
-  double length = 0.0;
-  for (;;) {
-    length += (p - d.p[static_cast<std::size_t>(l)]).norm();
-    if (l == first || l <= 0) break;
-    p = d.p[static_cast<std::size_t>(l)];
-    l = M.links[static_cast<std::size_t>(l)].parent;
-  }
-  return length;
-}
-
-// The SDH's size over the human hand's: the summed lengths of the mapped digits (SDH thumb,
-// finger 1, finger 2 against the human thumb, index, ring), 0.5145 / 0.2366 = 2.175.
-inline double sdh_human_scale() {
-  constexpr auto& s = models::schunk_sdh;
-  constexpr auto& h = models::human_hand;
-  const double robot = digit_length<s>(s.link("thumb_1"), s.frame("thumb_tip")) +
-                       digit_length<s>(s.link("knuckle"), s.frame("tip_1")) +
-                       digit_length<s>(s.link("knuckle_2"), s.frame("tip_2"));
-  const double human = digit_length<h>(h.link("thumb_cmc1"), h.frame("thumb_tip")) +
-                       digit_length<h>(h.link("index_abd"), h.frame("index_tip")) +
-                       digit_length<h>(h.link("ring_abd"), h.frame("ring_tip"));
-  return robot / human;
-}
-
 // The SDH windings of its two curves around the point p (object frame).
 inline Vec2 sdh_windings(const Vec3& p, const Eigen::Isometry3d& root, const Vec<7>& q) {
   return hand_windings<models::schunk_sdh>(p, root, q);
@@ -339,35 +307,6 @@ inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3
   return open_hand_until_clear<models::schunk_sdh>(object, root, q_hand, sim);
 }
 
-namespace detail {
-
-// The baselines' last steps: q opened until the SDH at root (object frame) is clear of the object
-// (open_until_clear), moved on along its approach until contact (at most final_approach) or backed
-// off if it still overlaps (place_at_contact), then closed and judged into r (planned; r.reason
-// kept) with r.plan_ms the time since t0. If it cannot be placed nothing is simulated and
-// r.reason says why.
-inline void open_place_and_simulate(const GraspObject& object, const Eigen::Isometry3d& root,
-                                    const Vec<7>& q, const TransferOptions& options,
-                                    Clock::time_point t0, RobotGrasp& r) {
-  const Vec<7> opened = open_until_clear(object, root, q, options.sim);
-  const auto placed = place_at_contact(object, root, opened, root.linear().col(2), options.sim,
-                                       options.final_approach);
-  r.plan_ms = ms_since(t0);
-  if (!placed) {
-    r.reason = "the hand cannot be placed clear of the object";
-    return;
-  }
-  const std::string unusable = unusable_sdh_pose(*placed, opened);
-  if (!unusable.empty()) {
-    r.reason = unusable;
-    return;
-  }
-  r.planned = true;
-  simulate_sdh_grasp(object, *placed, opened, options, r);
-}
-
-}  // namespace detail
-
 /// The SDH's joints of the transplant baseline before closing: sdh_preshape's knuckle, the
 /// proximal joints of the fingers and the thumb at -options.transplant_opening, the distal ones at
 /// +options.transplant_opening.
@@ -412,101 +351,283 @@ template <const auto& Target, const auto& Source>
   return r;
 }
 
-/// The paper's baseline on the SDH (transplant_grasp from the human hand, judged also by
-/// options.sim.second_judge_sdh).
-[[nodiscard]] inline RobotGrasp transfer_transplant(const GraspObject& object, const HumanGrasp& g,
-                                                    const TransferOptions& options = {}) {
-  if (const std::string problem = detail::unusable_human_grasp(g); !problem.empty()) {
-    RobotGrasp r;
-    r.method = TransferMethod::transplant;
-    r.reason = problem;
-    return r;
-  }
-  return transplant_grasp<models::schunk_sdh>(object, source_grasp(g), options,
-                                              options.sim.second_judge_sdh);
-}
-
-/// The largest distance (m) between a fitted SDH fingertip and its target for which the
-/// fingertip mapping counts as done: 0.5 m, about three times the SDH's finger length (0.17 m).
-/// A larger error means the targets were out of the hand's reach, and the fit failed.
+/// The largest distance (m) between a fitted fingertip and its target for which the fingertip
+/// mapping counts as done: 0.5 m, about three times the SDH's finger length (0.17 m). A larger
+/// error means the targets were out of the hand's reach, and the fit failed.
 inline constexpr double k_fingertip_max_error = 0.5;
 
-/// The targets of the fingertip mapping for the SDH's thumb tip, finger 1 tip and finger 2 tip
-/// (object frame): the human's thumb, index and ring tips of \p g scaled about their centroid by
-/// options.fingertip_scale (0: the SDH/human ratio of the digits' lengths; the SDH's digits are
-/// about twice as long), then each moved to the nearest point of the object's surface and out
-/// along its normal by the SDH's phalanx radius and options.sim.contact_gap, so that the fitted
-/// tips touch the object, not the air. A scaled tip farther than k_fingertip_max_error from the
-/// centroid (a scale far beyond any hand's, or one that overflows) is left where it is, for the
-/// fit to refuse.
-[[nodiscard]] inline std::array<Vec3, 3> fingertip_targets(const GraspObject& object,
-                                                           const HumanGrasp& g,
-                                                           const TransferOptions& options = {}) {
-  constexpr auto& h = models::human_hand;
-  KinematicsData<h> hd;
-  forward_kinematics(hd, g.q);
-  std::array<Vec3, 3> goal{g.hand_pose * hd.frame_p[h.frame("thumb_tip")],
-                           g.hand_pose * hd.frame_p[h.frame("index_tip")],
-                           g.hand_pose * hd.frame_p[h.frame("ring_tip")]};
+/// The finger correspondence of the fingertip mapping from hand \p Source to hand \p Target: for
+/// each finger of Target (its hand description's order), the finger of Source whose tip its tip is
+/// fitted to, or -1. The thumb goes to the thumb; Target's other fingers, the j-th of its n in
+/// order, to the floor(j m / n)-th of Source's m other fingers, each Source finger used once (a
+/// Target finger whose Source finger is already taken is left out of the fit and closes with the
+/// hand). From the human hand (index, middle, ring, little): the SDH's and the Barrett's two
+/// fingers get the index and the ring; the Allegro's and the LEAP hand's three the index, middle
+/// and ring; the Shadow hand's four their namesakes. The rule was stated before any run.
+template <const auto& Target, const auto& Source>
+  requires HandModel<decltype(Target)> && HandModel<decltype(Source)>
+[[nodiscard]] constexpr std::array<int, Target.fingers.size()> fingertip_correspondence() {
+  constexpr int n = static_cast<int>(Target.fingers.size()) - 1;
+  constexpr int m = static_cast<int>(Source.fingers.size()) - 1;
+  std::array<int, Source.fingers.size() - 1> source_other{};
+  for (int f = 0, k = 0; f <= m; ++f)
+    if (f != Source.thumb) source_other[static_cast<std::size_t>(k++)] = f;
+  std::array<int, Target.fingers.size()> c{};
+  int j = 0, last = -1;
+  for (int f = 0; f <= n; ++f) {
+    auto& to = c[static_cast<std::size_t>(f)];
+    if (f == Target.thumb) {
+      to = Source.thumb;
+      continue;
+    }
+    const int k = j++ * m / n;
+    to = k == last ? -1 : source_other[static_cast<std::size_t>(k)];
+    last = k;
+  }
+  return c;
+}
+
+/// How many fingertips the fingertip mapping from \p Source to \p Target fits: the thumb and
+/// min(n, m) others.
+template <const auto& Target, const auto& Source>
+inline constexpr int fingertip_count =
+    1 + static_cast<int>(std::min(Target.fingers.size(), Source.fingers.size())) - 1;
+
+namespace detail {
+
+// The fitted pairs of the fingertip mapping (fingertip_correspondence): {Target finger, Source
+// finger}, the thumb first, then Target's fingers in order.
+template <const auto& Target, const auto& Source>
+constexpr std::array<std::pair<int, int>, fingertip_count<Target, Source>> fingertip_pairs() {
+  constexpr auto c = fingertip_correspondence<Target, Source>();
+  std::array<std::pair<int, int>, fingertip_count<Target, Source>> pairs{};
+  pairs[0] = {Target.thumb, Source.thumb};
+  std::size_t k = 1;
+  for (int f = 0; f < static_cast<int>(c.size()); ++f)
+    if (f != Target.thumb && c[static_cast<std::size_t>(f)] >= 0)
+      pairs[k++] = {f, c[static_cast<std::size_t>(f)]};
+  return pairs;
+}
+
+// The first link on the path from M's root to finger f's tip that is on no other finger's path:
+// where the digit starts (the human's index_abd and thumb_cmc1, the SDH's knuckle and thumb_1).
+template <const auto& M>
+int digit_base(int f) {
+  const auto on_path = [](int link, int g) {
+    for (int l = finger_tip<M>(g).link; l >= 0; l = M.links[static_cast<std::size_t>(l)].parent)
+      if (l == link) return true;
+    return false;
+  };
+  int base = finger_tip<M>(f).link;
+  for (int l = base; l >= 0; l = M.links[static_cast<std::size_t>(l)].parent) {
+    for (int g = 0; g < static_cast<int>(M.fingers.size()); ++g)
+      if (g != f && on_path(l, g)) return base;
+    base = l;
+  }
+  return base;
+}
+
+// The length (m) of finger f of M held straight (q = 0): the distances between the link origins
+// from its digit_base out to its tip.
+template <const auto& M>
+double digit_length(int f) {
+  KinematicsData<M> d;
+  forward_kinematics(d, Vec<M.nq>::Zero());
+  const int first = digit_base<M>(f);
+  Vec3 p = world_point(d, finger_tip<M>(f));
+  int l = finger_tip<M>(f).link;
+  double length = 0.0;
+  for (;;) {
+    length += (p - d.p[static_cast<std::size_t>(l)]).norm();
+    if (l == first || l <= 0) break;
+    p = d.p[static_cast<std::size_t>(l)];
+    l = M.links[static_cast<std::size_t>(l)].parent;
+  }
+  return length;
+}
+
+// The radius (m) of finger f's tip: of the shapes of its tip's link, the one nearest the tip
+// point; its radius (sphere, capsule, cylinder) or smallest half extent (box). 0 if the link has
+// no shape.
+template <const auto& M>
+double tip_radius(int f) {
+  KinematicsData<M> d;
+  forward_kinematics(d, Vec<M.nq>::Zero());
+  const LinkPoint tip = finger_tip<M>(f);
+  const Primitive probe = Primitive::sphere(world_point(d, tip), 1e-6);
+  double nearest = std::numeric_limits<double>::infinity(), radius = 0.0;
+  for (std::size_t k = 0; k < M.n_shapes; ++k) {
+    const Shape& s = M.shapes[k];
+    if (s.link != tip.link) continue;
+    const double distance = std::abs(signed_distance(world_shape(d, k), probe).distance);
+    if (distance >= nearest) continue;
+    nearest = distance;
+    const auto& size = s.spec.size;
+    radius = s.spec.type == ShapeType::box ? std::min({size[0], size[1], size[2]}) : size[0];
+  }
+  return radius;
+}
+
+// Hand M's opposition at kinematics d mapped by T: its thumb tip (the first virtual finger) and
+// the centroid of its other fingertips (the second).
+template <const auto& M>
+std::pair<Vec3, Vec3> opposition(const KinematicsData<M>& d,
+                                 const Eigen::Isometry3d& T = Eigen::Isometry3d::Identity()) {
+  Vec3 fingers = Vec3::Zero();
+  for (int f = 0; f < static_cast<int>(M.fingers.size()); ++f)
+    if (f != M.thumb) fingers += T * world_point(d, finger_tip<M>(f));
+  fingers /= static_cast<double>(M.fingers.size() - 1);
+  return {T * world_point(d, finger_tip<M>(M.thumb)), fingers};
+}
+
+// Hand M's free-base configuration (FreeBase) with its grasp frame (hand_profile) at T (object
+// frame, grasp_frame's convention: z the approach, x up) and joints q.
+template <const auto& M>
+Vec<FreeBase<M>::model.nq> free_at_grasp_frame(const Eigen::Isometry3d& T, const Vec<M.nq>& q) {
+  constexpr auto& F = FreeBase<M>::model;
+  const HandProfile<M> profile = hand_profile<M>();
+  Eigen::Isometry3d frame = T;
+  frame.linear() =
+      T.linear() * palm_rotation(profile.axes, gripper_hand_axes.approach, gripper_hand_axes.up);
+  return place_frame<F>(
+      frame, F.find_frame(M.frames[static_cast<std::size_t>(profile.frame)].spec.name.view()), q);
+}
+
+// The baselines' last steps for hand M: q opened until M at root (object frame) is clear of the
+// object (open_hand_until_clear), moved on along its approach until contact (at most
+// final_approach) or backed off if it still overlaps (place_hand_at_contact), then closed and
+// judged into r (planned; r.reason kept; with second if set) with r.plan_ms the time since t0. If
+// it cannot be placed nothing is simulated and r.reason says why.
+template <const auto& M>
+void open_place_and_simulate(const GraspObject& object, const Eigen::Isometry3d& root,
+                             const Vec<M.nq>& q, const TransferOptions& options,
+                             const SecondJudge<M>& second, Clock::time_point t0,
+                             HandTransfer<M>& r) {
+  const Vec<M.nq> opened = open_hand_until_clear<M>(object, root, q, options.sim);
+  KinematicsData<M> d;
+  forward_kinematics(d, opened);
+  const HandProfile<M> profile = hand_profile<M>();
+  const Vec3 approach =
+      root.linear() * (d.frame_R[static_cast<std::size_t>(profile.frame)] * profile.axes.approach);
+  const auto placed =
+      place_hand_at_contact<M>(object, root, opened, approach, options.sim, options.final_approach);
+  r.plan_ms = ms_since(t0);
+  if (!placed) {
+    r.reason = "the hand cannot be placed clear of the object";
+    return;
+  }
+  const std::string unusable = unusable_hand_pose<M>(*placed, opened);
+  if (!unusable.empty()) {
+    r.reason = unusable;
+    return;
+  }
+  r.planned = true;
+  simulate_hand_grasp<M>(object, *placed, opened, options.sim, second, r);
+}
+
+}  // namespace detail
+
+/// The size of hand \p Target over hand \p Source for the fingertip mapping: the summed lengths of
+/// the fitted digits held straight (fingertip_correspondence; a digit from the first link that
+/// moves it alone out to its tip). Human -> SDH: 0.5145 / 0.2366 = 2.175.
+template <const auto& Target, const auto& Source>
+[[nodiscard]] double fingertip_scale() {
+  double target = 0.0, source = 0.0;
+  for (const auto& [t, s] : detail::fingertip_pairs<Target, Source>()) {
+    target += detail::digit_length<Target>(t);
+    source += detail::digit_length<Source>(s);
+  }
+  return target / source;
+}
+
+/// The targets of the fingertip mapping (object frame), the thumb's first, then Target's fitted
+/// fingers in order (fingertip_correspondence): the tips of their Source fingers in \p source
+/// scaled about their centroid by options.fingertip_scale (0: fingertip_scale<Target, Source>()),
+/// then each moved to the nearest point of the object's surface and out along its normal by the
+/// radius of Target's fingertip and options.sim.contact_gap, so that the fitted tips touch the
+/// object, not the air. A scaled tip farther than k_fingertip_max_error from the centroid (a scale
+/// far beyond any hand's, or one that overflows) is left where it is, for the fit to refuse.
+template <const auto& Target, const auto& Source>
+  requires HandModel<decltype(Target)> && HandModel<decltype(Source)>
+[[nodiscard]] std::array<Vec3, fingertip_count<Target, Source>> fingertip_targets(
+    const GraspObject& object, const HandGrasp<Source>& source,
+    const TransferOptions& options = {}) {
+  constexpr auto pairs = detail::fingertip_pairs<Target, Source>();
+  KinematicsData<Source> sd;
+  forward_kinematics(sd, source.q);
+  std::array<Vec3, pairs.size()> goal;
+  Vec3 centroid = Vec3::Zero();
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    goal[k] = source.root * world_point(sd, finger_tip<Source>(pairs[k].second));
+    centroid += goal[k];
+  }
+  centroid /= static_cast<double>(pairs.size());
   const double scale =
-      options.fingertip_scale > 0.0 ? options.fingertip_scale : detail::sdh_human_scale();
-  const Vec3 centroid = (goal[0] + goal[1] + goal[2]) / 3.0;
+      options.fingertip_scale > 0.0 ? options.fingertip_scale : fingertip_scale<Target, Source>();
   const Composite shape = object.composite();  // parts() views it: keep it alive
-  for (Vec3& p : goal) {
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    Vec3& p = goal[k];
     p = centroid + scale * (p - centroid);
     if (!p.allFinite() || (p - centroid).norm() > k_fingertip_max_error) continue;
-    const Contact k = detail::nearest_surface(shape, p);
-    p = k.point_a + (models::sdh_dims::phalanx_radius + options.sim.contact_gap) * k.normal;
+    const Contact c = detail::nearest_surface(shape, p);
+    p = c.point_a +
+        (detail::tip_radius<Target>(pairs[k].first) + options.sim.contact_gap) * c.normal;
   }
   return goal;
 }
 
-/// Fingertip mapping (Rohling and Hollerbach 1993): the human's thumb, index and ring fingertips
-/// (the ring, not the middle, because its distance to the index is nearer the SDH's finger
-/// spacing) scaled to the SDH's size and put on the object's surface (fingertip_targets); the SDH
-/// on a free base fitted by damped least squares, within its joint limits, so that its thumb tip,
-/// finger 1 tip and finger 2 tip lie on them, started from the transplant pose with a weak pull
-/// toward it (options.fingertip_prior); then
-/// opened until clear of the object (open_until_clear), backed off along its approach only if it
-/// still overlaps, or moved on until contact (at most final_approach), and closed until contact.
+/// Fingertip mapping (Rohling and Hollerbach 1993) from any hand to any hand: Target's fingertips
+/// (fingertip_correspondence: the thumb to the thumb, the fingers spread over the source's) fitted
+/// to fingertip_targets, the source's tips scaled to Target's size and put on the object's
+/// surface. Target on its free base is fitted by damped least squares, within its joint limits,
+/// started at the transplant pose (its grasp frame at the source's, joints base_preshape) with a
+/// weak pull toward it (options.fingertip_prior); then opened until clear of the object
+/// (open_hand_until_clear), backed off along its approach only if it still overlaps, or moved on
+/// until contact (at most final_approach), closed until contact and judged (with \p second if
+/// set).
 ///
-/// When the fit cannot be done the result is not planned (RobotGrasp::planned false, nothing
-/// simulated) and RobotGrasp::reason says why: a non-finite human grasp, a fit whose cost is not
-/// finite (fingertip targets so far apart that their squared errors overflow, e.g.
-/// fingertip_scale = 1e300), a fit whose fingertips end more than k_fingertip_max_error from
-/// their targets (targets out of the hand's reach, e.g. fingertip_scale = 1e10), or a fitted hand
-/// that HandScene cannot take. It never reports the transplant pose it starts from as a fingertip
-/// transfer.
-[[nodiscard]] inline RobotGrasp transfer_fingertip(const GraspObject& object, const HumanGrasp& g,
-                                                   const TransferOptions& options = {}) {
+/// When the fit cannot be done the result is not planned (planned false, nothing simulated) and
+/// reason says why: a non-finite source grasp, a fit whose cost is not finite (fingertip targets so
+/// far apart that their squared errors overflow, e.g. fingertip_scale = 1e300), a fit whose
+/// fingertips end more than k_fingertip_max_error from their targets (targets out of the hand's
+/// reach, e.g. fingertip_scale = 1e10), or a fitted hand that HandScene cannot take. It never
+/// reports the transplant pose it starts from as a fingertip transfer.
+template <const auto& Target, const auto& Source>
+  requires HandModel<decltype(Target)> && HandModel<decltype(Source)>
+[[nodiscard]] HandTransfer<Target> fingertip_grasp(const GraspObject& object,
+                                                   const HandGrasp<Source>& source,
+                                                   const TransferOptions& options = {},
+                                                   const SecondJudge<Target>& second = {}) {
   const auto t0 = detail::Clock::now();
-  RobotGrasp r;
+  HandTransfer<Target> r;
   r.method = TransferMethod::fingertip;
-  r.reason = detail::unusable_human_grasp(g);
+  r.reason = detail::unusable_source_grasp(source);
   if (!r.reason.empty()) return r;
-  constexpr auto& f = models::schunk_sdh_free;
-  const std::array<Vec3, 3> goal = fingertip_targets(object, g, options);
+  constexpr auto& F = FreeBase<Target>::model;
+  constexpr auto pairs = detail::fingertip_pairs<Target, Source>();
+  constexpr int n = static_cast<int>(pairs.size());
+  constexpr int rows = 3 * n + F.nq;
+  const auto goal = fingertip_targets<Target>(object, source, options);
   const double scale =
-      options.fingertip_scale > 0.0 ? options.fingertip_scale : detail::sdh_human_scale();
-  const std::array<int, 3> tips{f.frame("thumb_tip"), f.frame("tip_1"), f.frame("tip_2")};
-  const Eigen::Isometry3d target = detail::sdh_grasp_target(g);
-  Vec<13> q = place_frame<f>(target, f.frame("grasp_centre"), options.sdh_preshape);
-  const Vec<13> lo = lower_limits<f>(), hi = upper_limits<f>();
-  // Residual: the three tip errors (m), then a weak pull toward the transplant pose and the
-  // pre-shape (weight options.fingertip_prior per m or rad), which keeps the under-determined fit
-  // (13 unknowns, 9 equations) from drifting.
-  const Vec<13> q_ref = q;
+      options.fingertip_scale > 0.0 ? options.fingertip_scale : fingertip_scale<Target, Source>();
+  Vec<F.nq> q =
+      detail::free_at_grasp_frame<Target>(grasp_frame(source), base_preshape<Target>(options));
+  const Vec<F.nq> lo = lower_limits<F>(), hi = upper_limits<F>();
+  // Residual: the tip errors (m), then a weak pull toward the transplant pose and the pre-shape
+  // (weight options.fingertip_prior per m or rad), which keeps the under-determined fit (more
+  // unknowns than equations) from drifting.
+  const Vec<F.nq> q_ref = q;
   const double w = std::sqrt(options.fingertip_prior);
-  KinematicsData<f> d;
-  const auto residual = [&](const Vec<13>& x, Vec<22>& e) {
+  KinematicsData<F> d;
+  const auto tip = [&](int k) { return finger_tip<F>(pairs[static_cast<std::size_t>(k)].first); };
+  const auto residual = [&](const Vec<F.nq>& x, Vec<rows>& e) {
     forward_kinematics(d, x);
-    for (std::size_t k = 0; k < 3; ++k)
-      e.segment<3>(3 * static_cast<int>(k)) =
-          d.frame_p[static_cast<std::size_t>(tips[k])] - goal[k];
-    e.tail<13>() = w * (x - q_ref);
+    for (int k = 0; k < n; ++k)
+      e.template segment<3>(3 * k) = world_point(d, tip(k)) - goal[static_cast<std::size_t>(k)];
+    e.template tail<F.nq>() = w * (x - q_ref);
     return e.squaredNorm();
   };
-  Vec<22> e;
+  Vec<rows> e;
   double cost = residual(q, e);
   if (!std::isfinite(cost)) {
     r.plan_ms = detail::ms_since(t0);
@@ -519,15 +640,15 @@ inline constexpr double k_fingertip_max_error = 0.5;
     return r;
   }
   double lambda = 1e-3;
-  Mat<22, 13> J = Mat<22, 13>::Zero();
-  J.bottomRows<13>() = w * Mat<13, 13>::Identity();
+  Mat<rows, F.nq> J = Mat<rows, F.nq>::Zero();
+  J.template bottomRows<F.nq>() = w * Mat<F.nq, F.nq>::Identity();
   bool progressed = false;  // a step was accepted: the fit left the transplant pose
   for (int it = 0; it < options.fingertip_iterations; ++it) {
-    for (std::size_t k = 0; k < 3; ++k)
-      J.middleRows<3>(3 * static_cast<int>(k)) = frame_position_jacobian(d, tips[k]);
-    const Mat<13, 13> H = J.transpose() * J + lambda * Mat<13, 13>::Identity();
-    const Vec<13> trial = (q - H.ldlt().solve(J.transpose() * e)).cwiseMax(lo).cwiseMin(hi);
-    Vec<22> et;
+    for (int k = 0; k < n; ++k)
+      J.template middleRows<3>(3 * k) = point_jacobian(d, tip(k).link, world_point(d, tip(k)));
+    const Mat<F.nq, F.nq> H = J.transpose() * J + lambda * Mat<F.nq, F.nq>::Identity();
+    const Vec<F.nq> trial = (q - H.ldlt().solve(J.transpose() * e)).cwiseMax(lo).cwiseMin(hi);
+    Vec<rows> et;
     const double c = residual(trial, et);
     if (c < cost) {
       const bool settled = cost - c < 1e-12;
@@ -549,9 +670,9 @@ inline constexpr double k_fingertip_max_error = 0.5;
   }
   forward_kinematics(d, q);
   double tip_error = 0.0;
-  for (std::size_t k = 0; k < 3; ++k)
+  for (int k = 0; k < n; ++k)
     tip_error =
-        std::max(tip_error, (d.frame_p[static_cast<std::size_t>(tips[k])] - goal[k]).norm());
+        std::max(tip_error, (world_point(d, tip(k)) - goal[static_cast<std::size_t>(k)]).norm());
   if (!(tip_error <= k_fingertip_max_error)) {
     r.plan_ms = detail::ms_since(t0);
     char buf[128];
@@ -562,29 +683,19 @@ inline constexpr double k_fingertip_max_error = 0.5;
     r.reason = buf;
     return r;
   }
-  const Eigen::Isometry3d fitted = link_pose(d, f.link("palm"));
-  r.reason = detail::unusable_sdh_pose(fitted, q.tail<7>());
+  const Eigen::Isometry3d fitted = link_pose(d, F.find_link(Target.links[0].spec.name.view()));
+  const Vec<Target.nq> q_hand = q.template tail<Target.nq>();
+  r.reason = unusable_hand_pose<Target>(fitted, q_hand);
   if (!r.reason.empty()) {
     r.plan_ms = detail::ms_since(t0);
     r.reason = "fitted: " + r.reason;
     return r;
   }
-  detail::open_place_and_simulate(object, fitted, q.tail<7>(), options, t0, r);
+  detail::open_place_and_simulate<Target>(object, fitted, q_hand, options, second, t0, r);
   return r;
 }
 
 namespace detail {
-
-// The SDH's opposition at joints q (its palm frame): its thumb tip (the first virtual finger) and
-// the midpoint of its two finger tips (the second).
-inline std::pair<Vec3, Vec3> sdh_opposition(const Vec<7>& q) {
-  constexpr auto& s = models::schunk_sdh;
-  KinematicsData<s> d;
-  forward_kinematics(d, q);
-  return {d.frame_p[static_cast<std::size_t>(s.frame("thumb_tip"))],
-          0.5 * (d.frame_p[static_cast<std::size_t>(s.frame("tip_1"))] +
-                 d.frame_p[static_cast<std::size_t>(s.frame("tip_2"))])};
-}
 
 // The length (m) of the object's chord along the line c + s u (u unit): the inside interval of
 // samples each millimetre for |s| <= 0.3 m that contains c or, if c is outside, lies nearest it;
@@ -611,99 +722,165 @@ inline double chord_length(const Composite& shape, const Vec3& c, const Vec3& u)
 inline constexpr int k_virtual_finger_openings = 151;
 
 /// Virtual-finger mapping (Arbib, Iberall and Lyons 1985; Iberall 1987), the power-grasp
-/// baseline. In the human grasp the four fingers act as one virtual finger (the centroid of their
-/// tips) that either the palm opposes (palm opposition, a power grasp: the human's palm touches
-/// the object, within sim.contact_gap and the stability suite's touch_distance) or the thumb (pad
-/// opposition: only the digits touch). The SDH's thumb tip opposes the midpoint of its two
-/// finger tips:
-/// - pad: the SDH's opposition along the human's, the midpoints together, the SDH's approach the
-///   human's made orthogonal to it; the aperture the human's (thumb tip to the fingers' centroid);
-/// - palm: the SDH placed as the transplant (its grasp centre at the human's, its approach the
-///   palm's, thumb to fingers along the human's fingers); the aperture the object's chord along
-///   that axis through the human's grasp centre (chord_length).
-/// The SDH is opened as transplant_preshape at the opening (0 to 1.5 rad) whose aperture (thumb
-/// tip to the midpoint of the finger tips) is nearest that aperture plus
+/// baseline, from any hand to any hand. In the source grasp the fingers other than the thumb act
+/// as one virtual finger (the centroid of their tips) that either the palm opposes (palm
+/// opposition, a power grasp: a shape of the source's palm link touches the object, within
+/// sim.contact_gap and the stability suite's touch_distance) or the thumb (pad opposition: only
+/// the digits touch). In Target the thumb tip opposes the centroid of its other fingertips:
+/// - pad: Target's opposition along the source's, the midpoints together, Target's approach the
+///   source's made orthogonal to it; the aperture the source's (thumb tip to the fingers'
+///   centroid);
+/// - palm: Target placed as the transplant (its grasp frame at the source's: grasp_frame); the
+///   aperture the object's chord along the "up" axis (thumb to fingers) through the source's grasp
+///   centre (chord_length).
+/// Target is opened as opened_preshape(opening, base_preshape) at the opening (0 to 1.5 rad) whose
+/// aperture (thumb tip to the centroid of the other tips) is nearest that aperture plus
 /// options.virtual_finger_margin (the pre-shape rule, stated before any run); then opened until
-/// clear of the object (open_until_clear), backed off along its approach only if it still
-/// overlaps, or moved on until contact (at most final_approach), and closed until contact.
+/// clear of the object (open_hand_until_clear), backed off along its approach only if it still
+/// overlaps, or moved on until contact (at most final_approach), closed until contact and judged
+/// (with \p second if set).
 ///
-/// Not planned (RobotGrasp::planned false, reason says why) for a non-finite human grasp, a pad
-/// opposition shorter than 1 mm or along the human's approach (no axis to turn the SDH by), or a
-/// hand that cannot be placed clear of the object.
-[[nodiscard]] inline RobotGrasp transfer_virtual_finger(const GraspObject& object,
-                                                        const HumanGrasp& g,
-                                                        const TransferOptions& options = {}) {
+/// Not planned (planned false, reason says why) for a non-finite source grasp, a pad opposition
+/// shorter than 1 mm or along the source's approach (no axis to turn the hand by), or a hand that
+/// cannot be placed clear of the object.
+template <const auto& Target, const auto& Source>
+  requires HandModel<decltype(Target)> && HandModel<decltype(Source)>
+[[nodiscard]] HandTransfer<Target> virtual_finger_grasp(const GraspObject& object,
+                                                        const HandGrasp<Source>& source,
+                                                        const TransferOptions& options = {},
+                                                        const SecondJudge<Target>& second = {}) {
   const auto t0 = detail::Clock::now();
-  RobotGrasp r;
+  HandTransfer<Target> r;
   r.method = TransferMethod::virtual_finger;
-  r.reason = detail::unusable_human_grasp(g);
+  r.reason = detail::unusable_source_grasp(source);
   if (!r.reason.empty()) return r;
-  constexpr auto& h = models::human_hand;
-  KinematicsData<h> hd;
-  forward_kinematics(hd, g.q);
-  const auto at = [&](int frame) {
-    return Vec3(g.hand_pose * hd.frame_p[static_cast<std::size_t>(frame)]);
-  };
-  const Vec3 thumb_h = at(h.frame("thumb_tip"));
-  const Vec3 fingers_h = 0.25 * (at(h.frame("index_tip")) + at(h.frame("middle_tip")) +
-                                 at(h.frame("ring_tip")) + at(h.frame("pinky_tip")));
+  KinematicsData<Source> sd;
+  forward_kinematics(sd, source.q);
+  const auto [thumb_s, fingers_s] = detail::opposition<Source>(sd, source.root);
   const Composite shape = object.composite();  // parts() views it: keep it alive
   // Palm opposition when the palm touches the object (within the approach's contact gap and the
   // stability suite's touch distance), pad opposition when only the digits do.
-  const Composite in_hand = object.composite(g.hand_pose.inverse());
+  const Composite in_hand = object.composite(source.root.inverse());
   double palm_distance = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < h.n_shapes; ++k)
-    if (h.shapes[k].link == h.link("palm"))
+  for (std::size_t k = 0; k < Source.n_shapes; ++k)
+    if (Source.shapes[k].link == Source.palm.link)
       for (const Primitive& part : in_hand.parts())
-        palm_distance = std::min(palm_distance, signed_distance(world_shape(hd, k), part).distance);
+        palm_distance = std::min(palm_distance, signed_distance(world_shape(sd, k), part).distance);
   const bool pad =
       !(palm_distance <= options.sim.contact_gap + options.sim.stability.touch_distance);
-  const Eigen::Isometry3d target = detail::sdh_grasp_target(g);
+  const Eigen::Isometry3d target = grasp_frame(source);
   const Vec3 approach = target.linear().col(2);
-  const Vec3 opposition = pad ? Vec3(fingers_h - thumb_h) : Vec3(target.linear().col(0));
+  const Vec3 opposition = pad ? Vec3(fingers_s - thumb_s) : Vec3(target.linear().col(0));
   const double aperture =
       pad ? opposition.norm() : detail::chord_length(shape, target.translation(), opposition);
   if (pad && (!(aperture >= 1e-3) || opposition.cross(approach).norm() < 1e-3 * aperture)) {
     r.plan_ms = detail::ms_since(t0);
-    r.reason = "the human's opposition is too short or along its approach";
+    r.reason = "the source's opposition is too short or along its approach";
     return r;
   }
   // The opening whose aperture is nearest the goal.
   const double goal = aperture + options.virtual_finger_margin;
-  Vec<7> preshape = options.sdh_preshape;
+  const Vec<Target.nq> base = base_preshape<Target>(options);
+  Vec<Target.nq> preshape = base;
   double best = std::numeric_limits<double>::infinity();
-  TransferOptions opened = options;
+  KinematicsData<Target> d;
   for (int i = 0; i < k_virtual_finger_openings; ++i) {
-    opened.transplant_opening = 0.01 * i;
-    const Vec<7> q = transplant_preshape(opened);
-    const auto [thumb, fingers] = detail::sdh_opposition(q);
+    const Vec<Target.nq> q = opened_preshape<Target>(0.01 * i, base);
+    forward_kinematics(d, q);
+    const auto [thumb, fingers] = detail::opposition<Target>(d);
     const double error = std::abs((fingers - thumb).norm() - goal);
     if (error < best) {
       best = error;
       preshape = q;
     }
   }
-  Eigen::Isometry3d root = detail::sdh_root_for_grasp_centre(target);
-  if (pad) {  // the SDH's opposition along the human's, the midpoints together
-    const auto [thumb, fingers] = detail::sdh_opposition(preshape);
-    root.linear() = palm_rotation(HandAxes{(fingers - thumb).normalized(), Vec3::UnitZ()},
+  Eigen::Isometry3d root = root_for_grasp_frame<Target>(target, preshape);
+  if (pad) {  // Target's opposition along the source's, the midpoints together
+    forward_kinematics(d, preshape);
+    const auto [thumb, fingers] = detail::opposition<Target>(d);
+    const HandProfile<Target> profile = hand_profile<Target>();
+    const Vec3 local_approach =
+        d.frame_R[static_cast<std::size_t>(profile.frame)] * profile.axes.approach;
+    root.linear() = palm_rotation(HandAxes{(fingers - thumb).normalized(), local_approach},
                                   opposition, approach);
-    root.translation() = 0.5 * (thumb_h + fingers_h) - root.linear() * (0.5 * (thumb + fingers));
+    root.translation() = 0.5 * (thumb_s + fingers_s) - root.linear() * (0.5 * (thumb + fingers));
   }
   r.reason = pad ? "pad opposition" : "palm opposition";
-  detail::open_place_and_simulate(object, root, preshape, options, t0, r);
+  detail::open_place_and_simulate<Target>(object, root, preshape, options, second, t0, r);
   return r;
 }
 
-/// The point (object frame) that the windings of the topological transfer of \p g are taken
-/// around: the centre of mass, or the point of \p object nearest the human's grasp centre (the
-/// grasp centre itself if it lies inside the object).
-[[nodiscard]] inline Vec3 winding_reference_point(const GraspObject& object, const HumanGrasp& g,
+namespace detail {
+
+// The SDH baseline \p run on the human grasp g, judged also by options.sim.second_judge_sdh; a
+// non-finite human grasp (its descriptor too) is not planned, reason says why.
+template <class Run>
+RobotGrasp sdh_from_human(TransferMethod method, const HumanGrasp& g,
+                          const TransferOptions& options, Run run) {
+  if (std::string problem = unusable_human_grasp(g); !problem.empty()) {
+    RobotGrasp r;
+    r.method = method;
+    r.reason = std::move(problem);
+    return r;
+  }
+  return run(source_grasp(g), options.sim.second_judge_sdh);
+}
+
+}  // namespace detail
+
+/// The paper's baseline on the SDH (transplant_grasp from the human hand), judged also by
+/// options.sim.second_judge_sdh.
+[[nodiscard]] inline RobotGrasp transfer_transplant(const GraspObject& object, const HumanGrasp& g,
+                                                    const TransferOptions& options = {}) {
+  return detail::sdh_from_human(TransferMethod::transplant, g, options, [&](auto s, auto& second) {
+    return transplant_grasp<models::schunk_sdh>(object, s, options, second);
+  });
+}
+
+/// The fingertip mapping of Table I: the human grasp \p g to the SDH (fingertip_grasp: the human's
+/// thumb, index and ring tips onto the SDH's thumb, finger 1 and finger 2 tips), judged also by
+/// options.sim.second_judge_sdh.
+[[nodiscard]] inline RobotGrasp transfer_fingertip(const GraspObject& object, const HumanGrasp& g,
+                                                   const TransferOptions& options = {}) {
+  return detail::sdh_from_human(TransferMethod::fingertip, g, options, [&](auto s, auto& second) {
+    return fingertip_grasp<models::schunk_sdh>(object, s, options, second);
+  });
+}
+
+/// The fingertip targets of transfer_fingertip (fingertip_targets), the SDH's thumb tip's first.
+[[nodiscard]] inline std::array<Vec3, 3> fingertip_targets(const GraspObject& object,
+                                                           const HumanGrasp& g,
+                                                           const TransferOptions& options = {}) {
+  return fingertip_targets<models::schunk_sdh>(object, source_grasp(g), options);
+}
+
+/// The virtual-finger mapping of Table I: the human grasp \p g to the SDH (virtual_finger_grasp:
+/// the SDH's thumb opposes the midpoint of its two finger tips), judged also by
+/// options.sim.second_judge_sdh.
+[[nodiscard]] inline RobotGrasp transfer_virtual_finger(const GraspObject& object,
+                                                        const HumanGrasp& g,
+                                                        const TransferOptions& options = {}) {
+  return detail::sdh_from_human(
+      TransferMethod::virtual_finger, g, options, [&](auto s, auto& second) {
+        return virtual_finger_grasp<models::schunk_sdh>(object, s, options, second);
+      });
+}
+
+/// The point (object frame) that the windings of a topological transfer are taken around: the
+/// centre of mass, or the point of \p object nearest \p grasp_centre, the source hand's grasp
+/// centre (the grasp centre itself if it lies inside the object).
+[[nodiscard]] inline Vec3 winding_reference_point(const GraspObject& object,
+                                                  const Vec3& grasp_centre,
                                                   WindingReference reference) {
   if (reference == WindingReference::centre_of_mass) return object.centre_of_mass();
-  const Vec3 c = detail::sdh_grasp_target(g).translation();  // the human's grasp centre
-  const Contact nearest = detail::nearest_surface(object.composite(), c);
-  return nearest.distance > 0.0 ? nearest.point_a : c;
+  const Contact nearest = detail::nearest_surface(object.composite(), grasp_centre);
+  return nearest.distance > 0.0 ? nearest.point_a : grasp_centre;
+}
+
+/// The same for the human grasp \p g (its grasp centre).
+[[nodiscard]] inline Vec3 winding_reference_point(const GraspObject& object, const HumanGrasp& g,
+                                                  WindingReference reference) {
+  return winding_reference_point(object, detail::sdh_grasp_target(g).translation(), reference);
 }
 
 /// The human's descriptor y of \p g around \p p (object frame): its two largest windings.

@@ -3,9 +3,11 @@
 // of the paper's experiment transferred to the SDH, the Barrett, the Allegro, the LEAP and the
 // Shadow hand on a free base, and two robot -> robot pairs (SDH -> Allegro, Allegro -> Shadow,
 // from the stable topological transfers of the same demonstrations), by each method, each grasp
-// judged by the built-in stepper and, where MuJoCo is linked, by MuJoCo.
+// judged by the built-in stepper and, where MuJoCo is linked, by MuJoCo. The transfers to each
+// target hand are compiled in a file of their own (pair.hpp).
 //
-//   transfer_matrix [--objects hammer,bottle] [--methods topological,paper,transplant]
+//   transfer_matrix [--objects hammer,bottle]
+//                   [--methods topological,paper,transplant,fingertip,virtual_finger]
 //                   [--max-hypotheses N] [--seed S] [--jobs N] [--out DIR] [--quiet]
 //
 // Writes DIR/matrix.json, DIR/matrix.md and the results page DIR/index.html (each atomically: a
@@ -26,27 +28,24 @@
 #include <vector>
 
 #include <topograsp/evaluation/statistics.hpp>
-#include <topograsp/grasp/any_hand.hpp>
 #include <topograsp/grasp/experiment.hpp>
 #include <topograsp/io/command_line.hpp>
 #include <topograsp/io/detail/svg_text.hpp>
 #include <topograsp/io/html_page.hpp>
 #include <topograsp/io/json.hpp>
-#include <topograsp/model/models/allegro_hand.hpp>
-#include <topograsp/model/models/leap_hand.hpp>
-#include <topograsp/model/models/shadow_hand.hpp>
-#ifdef TOPOGRASP_HAVE_MUJOCO
-#include <topograsp/io/mujoco_scene.hpp>
-#endif
+
+#include "pair.hpp"
 
 namespace {
 
 using namespace topograsp;
+using matrix::Record;
 
 struct Options {
   std::vector<std::string> objects{"hammer", "bottle"};
   std::vector<TransferMethod> methods{TransferMethod::topological, TransferMethod::paper,
-                                      TransferMethod::transplant};
+                                      TransferMethod::transplant, TransferMethod::fingertip,
+                                      TransferMethod::virtual_finger};
   int max_hypotheses = 0;  // 0: all
   std::uint64_t seed = 1;
   int jobs = 2;
@@ -55,13 +54,13 @@ struct Options {
 };
 
 constexpr std::string_view usage =
-    "usage: transfer_matrix [--objects hammer,bottle] [--methods topological,paper,transplant]\n"
+    "usage: transfer_matrix [--objects hammer,bottle]\n"
+    "                       [--methods topological,paper,transplant,fingertip,virtual_finger]\n"
     "                       [--max-hypotheses N] [--seed S] [--jobs N] [--out DIR] [--quiet]\n"
     "Transfers the human demonstrations of the paper's experiment to the SDH, Barrett, Allegro,\n"
     "LEAP and Shadow hands, and SDH -> Allegro, Allegro -> Shadow; writes DIR/matrix.json,\n"
-    "DIR/matrix.md and DIR/index.html (default DIR: matrix). Methods: topological and its variants "
-    "but\n"
-    "closed_windings, and transplant (docs/transfer.md, \"Any hand\").\n";
+    "DIR/matrix.md and DIR/index.html (default DIR: matrix). Methods: every method of the fair\n"
+    "experiment but closed_windings (docs/transfer.md, \"Any hand\").\n";
 
 Options parse(std::span<char*> args) {
   Options o;
@@ -129,45 +128,6 @@ struct Cell {
 };
 using Key = std::tuple<std::string, std::string, std::string>;  // pair, object, method
 
-// One transfer's verdicts into a task's list (pair, object, method, result).
-struct Record {
-  std::string pair, object, method;
-  bool planned = false, stable = false, stable_second = false, second = false;
-  std::string failure;  // empty if stable: "not planned: <reason>" or the first failed test
-  double winding_error = std::numeric_limits<double>::quiet_NaN();
-};
-
-template <const auto& M>
-SecondJudge<M> mujoco_judge() {
-#ifdef TOPOGRASP_HAVE_MUJOCO
-  return [](const HandScene<M>& scene, const StabilityOptions& o) {
-    return stability_suite(MujocoScene(scene), o);
-  };
-#else
-  return {};
-#endif
-}
-
-template <const auto& M>
-Record record(std::string pair, const std::string& object, const HandTransfer<M>& t) {
-  Record r{std::move(pair),
-           object,
-           std::string(to_string(t.method)),
-           t.planned,
-           t.stable(),
-           t.planned && t.second && t.second->stable,
-           t.second.has_value(),
-           {},
-           std::numeric_limits<double>::quiet_NaN()};
-  if (!t.planned)
-    r.failure = "not planned: " + t.reason;
-  else if (!t.stable())
-    r.failure = "unstable: " + t.stability.reason.substr(0, t.stability.reason.find(':'));
-  if (t.planned && t.source_winding)
-    r.winding_error = (t.winding - *t.source_winding).cwiseAbs().maxCoeff();
-  return r;
-}
-
 // The median of v (NaN if empty).
 double median(std::vector<double> v) {
   if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
@@ -189,27 +149,23 @@ std::string top_failure(const Cell& c) {
 // stable (built-in) transfers of the first method.
 std::vector<Record> transfer_all(const GraspObject& object, const HumanGrasp& g, const Options& o,
                                  const TransferOptions& options) {
+  using matrix::transfer_pair;
   std::vector<Record> out;
   const auto human = source_grasp(g);
-  const auto to = [&] < const auto & T,
-             const auto & S > (const std::string& pair, const HandGrasp<S>& source) {
-               std::vector<HandTransfer<T>> ts;
-               for (const TransferMethod m : o.methods) {
-                 ts.push_back(transfer_hand<T>(m, object, source, options, mujoco_judge<T>()));
-                 out.push_back(record(pair, object.name, ts.back()));
-               }
-               return ts;
-             };
-  const auto sdh = to.template operator()<models::schunk_sdh>("human -> SDH", human);
-  (void)to.template operator()<models::barrett_bh8>("human -> Barrett", human);
-  const auto allegro = to.template operator()<models::allegro_hand>("human -> Allegro", human);
-  (void)to.template operator()<models::leap_hand>("human -> LEAP", human);
-  (void)to.template operator()<models::shadow_hand>("human -> Shadow", human);
+  const auto& m = o.methods;
+  const auto sdh =
+      transfer_pair<models::schunk_sdh>("human -> SDH", object, human, m, options, out);
+  (void)transfer_pair<models::barrett_bh8>("human -> Barrett", object, human, m, options, out);
+  const auto allegro =
+      transfer_pair<models::allegro_hand>("human -> Allegro", object, human, m, options, out);
+  (void)transfer_pair<models::leap_hand>("human -> LEAP", object, human, m, options, out);
+  (void)transfer_pair<models::shadow_hand>("human -> Shadow", object, human, m, options, out);
   if (sdh.front().stable())
-    (void)to.template operator()<models::allegro_hand>("SDH -> Allegro", source_grasp(sdh.front()));
+    (void)transfer_pair<models::allegro_hand>("SDH -> Allegro", object, source_grasp(sdh.front()),
+                                              m, options, out);
   if (allegro.front().stable())
-    (void)to.template operator()<models::shadow_hand>("Allegro -> Shadow",
-                                                      source_grasp(allegro.front()));
+    (void)transfer_pair<models::shadow_hand>("Allegro -> Shadow", object,
+                                             source_grasp(allegro.front()), m, options, out);
   return out;
 }
 

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The transfer matrix's one step: a source grasp transferred to one target hand by each method,
+// each result judged and kept as a Record. transfer_pair is compiled once per target hand, each in
+// its own translation unit (sdh.cpp, barrett.cpp, allegro.cpp, leap.cpp, shadow.cpp), so that a
+// build spreads the matrix over its cores; main.cpp only declares it.
+#pragma once
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <topograsp/grasp/any_hand.hpp>
+#include <topograsp/model/models/allegro_hand.hpp>
+#include <topograsp/model/models/leap_hand.hpp>
+#include <topograsp/model/models/shadow_hand.hpp>
+
+namespace matrix {
+
+using namespace topograsp;
+
+// One transfer's verdicts (pair, object, method, result).
+struct Record {
+  std::string pair, object, method;
+  bool planned = false, stable = false, stable_second = false, second = false;
+  std::string failure;  // empty if stable: "not planned: <reason>" or the first failed test
+  double winding_error = std::numeric_limits<double>::quiet_NaN();
+};
+
+// \p source (hand S) on \p object transferred to hand T by each of \p methods in turn
+// (transfer_hand, judged by MuJoCo too where it is linked); one Record per method appended to
+// \p out under the name \p pair. Returns the transfers, in the order of \p methods.
+template <const auto& T, const auto& S>
+std::vector<HandTransfer<T>> transfer_pair(const std::string& pair, const GraspObject& object,
+                                           const HandGrasp<S>& source,
+                                           const std::vector<TransferMethod>& methods,
+                                           const TransferOptions& options,
+                                           std::vector<Record>& out);
+
+#define TOPOGRASP_MATRIX_PAIR(T, S)                                \
+  template std::vector<HandTransfer<T>> transfer_pair<T, S>(       \
+      const std::string&, const GraspObject&, const HandGrasp<S>&, \
+      const std::vector<TransferMethod>&, const TransferOptions&, std::vector<Record>&)
+
+extern TOPOGRASP_MATRIX_PAIR(models::schunk_sdh, models::human_hand);
+extern TOPOGRASP_MATRIX_PAIR(models::barrett_bh8, models::human_hand);
+extern TOPOGRASP_MATRIX_PAIR(models::allegro_hand, models::human_hand);
+extern TOPOGRASP_MATRIX_PAIR(models::allegro_hand, models::schunk_sdh);
+extern TOPOGRASP_MATRIX_PAIR(models::leap_hand, models::human_hand);
+extern TOPOGRASP_MATRIX_PAIR(models::shadow_hand, models::human_hand);
+extern TOPOGRASP_MATRIX_PAIR(models::shadow_hand, models::allegro_hand);
+
+}  // namespace matrix
