@@ -78,14 +78,15 @@ add_test(NAME "example: slurm job scripts"
                  -DDIR=${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_slurm
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/slurm/run_locally.cmake)
 # The transfer matrix (docs/results.md): a small run, one stable bottle demonstration to every
-# hand by the transplant baseline; bad arguments refused.
+# hand by the fingertip and virtual-finger baselines; bad arguments refused.
 add_test(NAME "example: transfer_matrix (small run)"
-         COMMAND transfer_matrix --objects bottle --max-hypotheses 6 --methods transplant --quiet
+         COMMAND transfer_matrix --objects bottle --max-hypotheses 6
+                 --methods fingertip,virtual_finger --quiet
                  --out ${CMAKE_CURRENT_BINARY_DIR}/transfer_matrix_small)
 set_tests_properties("example: transfer_matrix (small run)" PROPERTIES
-                     PASS_REGULAR_EXPRESSION "human -> Allegro \\| bottle \\| transplant \\| 1 \\|")
+                     PASS_REGULAR_EXPRESSION "human -> Shadow \\| bottle \\| virtual_finger \\| 1 \\|")
 expect_rejected(transfer_matrix "unknown object|--objects anvil|--objects: unknown object \"anvil\""
-                "an SDH-only method|--methods fingertip|--methods: unknown method \"fingertip\""
+                "a method that needs the arm|--methods closed_windings|--methods: unknown method \"closed_windings\""
                 "a repeated option|--jobs 2 --jobs 2|--jobs: given twice"
                 "a missing value|--out|--out: expected a value"
                 "bad jobs|--jobs 0|--jobs: expected 1 to 1024"

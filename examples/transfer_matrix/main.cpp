@@ -153,19 +153,19 @@ std::vector<Record> transfer_all(const GraspObject& object, const HumanGrasp& g,
   std::vector<Record> out;
   const auto human = source_grasp(g);
   const auto& m = o.methods;
-  const auto sdh =
-      transfer_pair<models::schunk_sdh>("human -> SDH", object, human, m, options, out);
-  (void)transfer_pair<models::barrett_bh8>("human -> Barrett", object, human, m, options, out);
+  const auto& op = options;
+  const auto sdh = transfer_pair<models::schunk_sdh>("human -> SDH", object, human, m, op, out);
+  (void)transfer_pair<models::barrett_bh8>("human -> Barrett", object, human, m, op, out);
   const auto allegro =
-      transfer_pair<models::allegro_hand>("human -> Allegro", object, human, m, options, out);
-  (void)transfer_pair<models::leap_hand>("human -> LEAP", object, human, m, options, out);
-  (void)transfer_pair<models::shadow_hand>("human -> Shadow", object, human, m, options, out);
-  if (sdh.front().stable())
+      transfer_pair<models::allegro_hand>("human -> Allegro", object, human, m, op, out);
+  (void)transfer_pair<models::leap_hand>("human -> LEAP", object, human, m, op, out);
+  (void)transfer_pair<models::shadow_hand>("human -> Shadow", object, human, m, op, out);
+  if (!sdh.empty() && sdh.front().stable())
     (void)transfer_pair<models::allegro_hand>("SDH -> Allegro", object, source_grasp(sdh.front()),
-                                              m, options, out);
-  if (allegro.front().stable())
+                                              m, op, out);
+  if (!allegro.empty() && allegro.front().stable())
     (void)transfer_pair<models::shadow_hand>("Allegro -> Shadow", object,
-                                             source_grasp(allegro.front()), m, options, out);
+                                             source_grasp(allegro.front()), m, op, out);
   return out;
 }
 

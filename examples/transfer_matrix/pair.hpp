@@ -26,9 +26,9 @@ struct Record {
   double winding_error = std::numeric_limits<double>::quiet_NaN();
 };
 
-// \p source (hand S) on \p object transferred to hand T by each of \p methods in turn
-// (transfer_hand, judged by MuJoCo too where it is linked); one Record per method appended to
-// \p out under the name \p pair. Returns the transfers, in the order of \p methods.
+// \p source (hand S) on \p object transferred to hand T on a free base by each of \p methods in
+// turn (transfer_hand), judged by MuJoCo too where it is linked; one Record per transfer appended
+// to \p out under the name \p pair. Returns the transfers, in the order of \p methods.
 template <const auto& T, const auto& S>
 std::vector<HandTransfer<T>> transfer_pair(const std::string& pair, const GraspObject& object,
                                            const HandGrasp<S>& source,

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Any hand to any hand (grasp/any_hand.hpp): hand profiles, the frame two hands meet in, the
-// winding targets of a hand with more or fewer curves than the source, transfer_hand on an
-// imported hand from the human hand and from the SDH, and what it does with bad input.
+// winding targets of a hand with more or fewer curves than the source, the fingertip
+// correspondence, transfer_hand (every method) on an imported hand from the human hand and from
+// the SDH, transfer_hand_on_arm, and what they do with bad input.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -29,6 +30,26 @@ const HumanGrasp& bottle_demonstration() {
     return HumanGrasp{};
   }();
   return g;
+}
+
+// A topological transfer r of the human grasp g to the Allegro: planned, its targets the human's
+// three largest windings (as demonstrate() took them on the free base and as the transfer takes
+// them from the palm pose: equal to rounding), the plan moving the windings toward them, judged
+// (the suite weighed the object), its joints within their limits.
+void check_topological_allegro(const HandTransfer<models::allegro_hand>& r, const HumanGrasp& g) {
+  INFO(r.reason);
+  REQUIRE(r.planned);
+  REQUIRE(r.source_winding.has_value());
+  Eigen::VectorXd human(4);
+  human = g.windings;
+  CHECK((*r.source_winding - winding_targets<3>(human)).norm() < 1e-9);
+  REQUIRE(r.winding_plan.size() >= 2);
+  const Vec3 y = *r.source_winding;
+  CHECK((r.winding_plan.back() - y).norm() < (r.winding_plan.front() - y).norm());
+  CHECK(r.sweeps > 0);
+  CHECK(r.stability.weight > 0.0);
+  CHECK((r.q_open.array() >= lower_limits<models::allegro_hand>().array()).all());
+  CHECK((r.q_open.array() <= upper_limits<models::allegro_hand>().array()).all());
 }
 
 }  // namespace
@@ -131,23 +152,8 @@ TEST_CASE(
   const GraspObject bottle = objects::bottle();
   const HumanGrasp& g = bottle_demonstration();
   REQUIRE(g.stable());
-  const auto r =
-      transfer_hand<models::allegro_hand>(TransferMethod::topological, bottle, source_grasp(g));
-  INFO(r.reason);
-  REQUIRE(r.planned);
-  REQUIRE(r.source_winding.has_value());
-  Eigen::VectorXd human(4);
-  human = g.windings;
-  // The human's windings as demonstrate() took them (free base) and as transfer_hand takes them
-  // (the palm pose): equal to rounding.
-  CHECK((*r.source_winding - winding_targets<3>(human)).norm() < 1e-9);
-  REQUIRE(r.winding_plan.size() >= 2);
-  const Vec3 y = *r.source_winding;
-  CHECK((r.winding_plan.back() - y).norm() < (r.winding_plan.front() - y).norm());
-  CHECK(r.sweeps > 0);
-  CHECK(r.stability.weight > 0.0);  // judged: the suite weighed the object
-  CHECK((r.q_open.array() >= lower_limits<models::allegro_hand>().array()).all());
-  CHECK((r.q_open.array() <= upper_limits<models::allegro_hand>().array()).all());
+  check_topological_allegro(
+      transfer_hand<models::allegro_hand>(TransferMethod::topological, bottle, source_grasp(g)), g);
   // The transplant baseline aims at no winding and plans nothing.
   const auto t =
       transfer_hand<models::allegro_hand>(TransferMethod::transplant, bottle, source_grasp(g));
@@ -244,6 +250,36 @@ TEST_CASE(
   }
 }
 
+TEST_CASE("human -> Allegro on the arm: the paper's planner for any hand", "[any_hand][transfer]") {
+  const GraspObject bottle = objects::bottle();
+  const HumanGrasp& g = bottle_demonstration();
+  REQUIRE(g.stable());
+  check_topological_allegro(transfer_hand_on_arm<models::allegro_hand>(TransferMethod::topological,
+                                                                       bottle, source_grasp(g)),
+                            g);
+  // The SDH on the arm from the human hand is Table I's transfer_topological: the same targets
+  // (the human's two largest windings, to rounding) and the same plan.
+  const auto sdh = transfer_hand_on_arm<models::schunk_sdh>(TransferMethod::topological, bottle,
+                                                            source_grasp(g));
+  const RobotGrasp table = transfer_topological(bottle, g);
+  REQUIRE(sdh.planned);
+  REQUIRE(table.planned);
+  CHECK((*sdh.source_winding - g.descriptor.values).norm() < 1e-9);
+  CHECK((sdh.hand_pose.translation() - table.hand_pose.translation()).norm() < 1e-3);
+  // The baselines place the hand without the arm.
+  for (const TransferMethod m :
+       {TransferMethod::transplant, TransferMethod::fingertip, TransferMethod::virtual_finger})
+    CHECK_THROWS_WITH(transfer_hand_on_arm<models::allegro_hand>(m, bottle, source_grasp(g)),
+                      Catch::StartsWith("method: ") && Catch::Contains(std::string(to_string(m))));
+  auto bad = source_grasp(g);
+  bad.q[0] = std::numeric_limits<double>::quiet_NaN();
+  const auto refused =
+      transfer_hand_on_arm<models::allegro_hand>(TransferMethod::paper, bottle, bad);
+  CHECK_FALSE(refused.planned);
+  CHECK(refused.method == TransferMethod::paper);
+  CHECK(refused.reason == "the source configuration is not finite");
+}
+
 TEST_CASE("transfer_hand: bad input is refused with a reason or an exception naming it",
           "[any_hand][errors]") {
   const GraspObject bottle = objects::bottle();
@@ -264,11 +300,11 @@ TEST_CASE("transfer_hand: bad input is refused with a reason or an exception nam
   CHECK_THROWS_WITH(
       transfer_hand<models::allegro_hand>(TransferMethod::closed_windings, bottle, source_grasp(g)),
       Catch::StartsWith("method: ") && Catch::Contains("closed_windings"));
-  // A fingertip fit whose targets are far out of the hand's reach is refused, not reported.
+  // A fingertip fit whose targets are far out of the hand's reach (a scale that transfer_hand's
+  // option check would refuse first) is not planned, not reported.
   TransferOptions far;
   far.fingertip_scale = 1e10;
-  const auto unreached =
-      transfer_hand<models::allegro_hand>(TransferMethod::fingertip, bottle, source_grasp(g), far);
+  const auto unreached = fingertip_grasp<models::allegro_hand>(bottle, source_grasp(g), far);
   CHECK_FALSE(unreached.planned);
   CHECK_THAT(unreached.reason, Catch::Contains("did not reach the targets"));
   TransferOptions bad;

@@ -170,4 +170,48 @@ template <const auto& Target, const auto& Source>
   return r;
 }
 
+/// Transfers \p source, a grasp of hand \p Source on \p object, to hand \p Target on the Schunk
+/// arm (OnArm<Target>: the hand's root at the flange), by the topological method or one of its
+/// variants (closed_windings included): the paper's planner for any hand. The source's windings
+/// around the winding reference become Target's winding targets (winding_targets); the object is
+/// placed so that the source's grasp frame maps onto Target's at the arm's ready pose
+/// (options.arm_ready, base_preshape) pushed out by options.backoff; AICO plans the arm and the
+/// hand with the tasks of transfer_topological; the final hand, without the arm, moves on until
+/// contact (at most final_approach), closes and is judged (with \p second if set).
+///
+/// A source grasp that is not finite or a plan that cannot be placed gives an unplanned result
+/// whose reason says why. \throws topograsp::invalid_argument naming "method" for the baselines
+/// (transplant, fingertip, virtual_finger: they place the hand without an arm, transfer_hand),
+/// and as validate_transfer_parameters for options out of range.
+template <const auto& Target, const auto& Source>
+  requires HandModel<decltype(Target)> && HandModel<decltype(Source)>
+[[nodiscard]] HandTransfer<Target> transfer_hand_on_arm(TransferMethod method,
+                                                        const GraspObject& object,
+                                                        const HandGrasp<Source>& source,
+                                                        const TransferOptions& given = {},
+                                                        const SecondJudge<Target>& second = {}) {
+  if (!is_topological(method))
+    detail::throw_invalid_argument("method", "transfer_hand_on_arm plans with the arm; " +
+                                                 std::string(to_string(method)) +
+                                                 " places the hand without it (transfer_hand)");
+  validate_transfer_parameters(given);
+  const TransferOptions options = transfer_method_options(method, given);
+  const auto t0 = detail::Clock::now();
+  if (std::string problem = detail::unusable_source_grasp(source); !problem.empty()) {
+    HandTransfer<Target> r;
+    r.method = method;
+    r.reason = std::move(problem);
+    return r;
+  }
+  const Eigen::Isometry3d meet = grasp_frame(source);
+  const Vec3 reference =
+      winding_reference_point(object, meet.translation(), options.winding_reference);
+  const Vec<hand_curve_count<Target>> y = winding_targets<hand_curve_count<Target>>(
+      hand_windings<Source>(reference, source.root, source.q));
+  HandTransfer<Target> r =
+      detail::topological_on_arm<Target>(object, meet, y, reference, options, second, t0);
+  r.method = method;
+  return r;
+}
+
 }  // namespace topograsp

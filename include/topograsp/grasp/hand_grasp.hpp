@@ -40,6 +40,18 @@ struct FreeBase<models::barrett_bh8> {
   static constexpr const auto& model = models::barrett_bh8_free;
 };
 
+/// Hand \p M on the Schunk arm's flange, its root link at the flange (attach): the paper's
+/// models::schunk_arm_sdh for the SDH, a model made once for any other hand. Its configuration is
+/// the arm's 7 joints, then the hand's.
+template <const auto& M>
+struct OnArm {
+  static constexpr auto model = attach(models::schunk_arm, "flange", M, {}, "schunk_arm_hand");
+};
+template <>
+struct OnArm<models::schunk_sdh> {
+  static constexpr const auto& model = models::schunk_arm_sdh;
+};
+
 /// How a transfer places and opens hand \p M: the frame it grasps with and the axes of that frame
 /// (HandAxes: the approach and "up"), and for each joint which way opens it (-1, 0 or +1 per rad).
 template <const auto& M>

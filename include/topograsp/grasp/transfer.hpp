@@ -83,13 +83,13 @@ struct TransferOptions {
   /// Weight of the fingertip fit's pull toward the transplant pose and the pre-shape, per m^2 or
   /// rad^2, against the tip errors in m^2 (1e-4: 1 rad weighs as 1 cm, so the tips are reached).
   double fingertip_prior = 1e-4;
-  /// Scale of the human's three tip positions about their centroid before they are put on the
-  /// object's surface (the robot's size over the human's); 0 = the SDH/human ratio of the mapped
-  /// digits' lengths (about 2.17).
+  /// Scale of the source's mapped tip positions about their centroid before they are put on the
+  /// object's surface (the target's size over the source's); 0 = the ratio of the mapped digits'
+  /// lengths, fingertip_scale<Target, Source>() (human -> SDH: 2.175).
   double fingertip_scale = 0.0;
-  /// The virtual-finger mapping opens the SDH until its thumb tip and the midpoint of its finger
-  /// tips lie this much farther apart than the human thumb tip and the centroid of the other four
-  /// (m): room for the SDH's phalanx (1.4 cm radius) and a clearance, 2 cm on each side.
+  /// The virtual-finger mapping opens the target hand until its thumb tip and the centroid of its
+  /// other tips lie this much farther apart than the source's aperture (m): room for the SDH's
+  /// phalanx (1.4 cm radius) and a clearance, 2 cm on each side.
   double virtual_finger_margin = 0.04;
   /// How far the transplant baseline opens the SDH before it is placed (rad): its proximal
   /// joints at -opening, its distal joints at +opening (the tips kept pointing inward), the
@@ -136,11 +136,11 @@ inline constexpr std::array<TransferParameter, 15> transfer_parameters{{
     {"fingertip_prior", &TransferOptions::fingertip_prior, 0.0, 1.0,
      "per m^2 or rad^2: the fingertip fit's pull to the transplant"},
     {"fingertip_scale", &TransferOptions::fingertip_scale, 0.0, 10.0,
-     "the human tips' scale; 0 derives it (2.175)"},
+     "the source tips' scale; 0 derives it (SDH: 2.175)"},
     {"transplant_opening", &TransferOptions::transplant_opening, 0.0, 1.5,
      "rad: how far the transplant opens the SDH's fingers"},
     {"virtual_finger_margin", &TransferOptions::virtual_finger_margin, 0.0, 0.2,
-     "m: the virtual-finger SDH's aperture beyond the human's"},
+     "m: the virtual-finger hand's aperture beyond the source's"},
 }};
 
 /// The entry of transfer_parameters called \p name, or nullptr.
@@ -226,11 +226,6 @@ inline Eigen::Isometry3d sdh_root_for_grasp_centre(const Eigen::Isometry3d& T) {
   return root_for_grasp_frame<models::schunk_sdh>(T, Vec<7>::Zero());
 }
 
-// The SDH windings of its two curves around the point p (object frame).
-inline Vec2 sdh_windings(const Vec3& p, const Eigen::Isometry3d& root, const Vec<7>& q) {
-  return hand_windings<models::schunk_sdh>(p, root, q);
-}
-
 // The point of \p shape's surface nearest \p p (point_a, object frame), the outward normal there
 // (normal) and p's signed distance (distance, negative inside): the contact of the part in which
 // p lies deepest, or of the nearest part if p is outside them all.
@@ -266,37 +261,7 @@ template <const auto& S>
   return {};
 }
 
-/// Why the SDH cannot be simulated at \p root with joints \p q (unusable_hand_pose).
-[[nodiscard]] inline std::string unusable_sdh_pose(const Eigen::Isometry3d& root, const Vec<7>& q) {
-  return unusable_hand_pose<models::schunk_sdh>(root, q);
-}
-
-// The scene of the SDH at root (object frame) with joints q_open on the object.
-inline HandScene<models::schunk_sdh> sdh_scene(const GraspObject& object,
-                                               const Eigen::Isometry3d& root, const Vec<7>& q_open,
-                                               const TransferOptions& options) {
-  return hand_scene<models::schunk_sdh>(object, root, q_open, options.sim);
-}
-
 }  // namespace detail
-
-/// Closes the SDH at \p root (its palm in the object frame) with joints \p q_open on the object,
-/// holds, and runs the stability suite on the scene as closing left it; fills the simulation
-/// fields of \p r.
-inline void simulate_sdh_grasp(const GraspObject& object, const Eigen::Isometry3d& root,
-                               const Vec<7>& q_open, const TransferOptions& options,
-                               RobotGrasp& r) {
-  simulate_hand_grasp<models::schunk_sdh>(object, root, q_open, options.sim,
-                                          options.sim.second_judge_sdh, r);
-}
-
-/// The SDH palm pose \p root moved to contact along \p approach
-/// (place_hand_at_contact<models::schunk_sdh>).
-[[nodiscard]] inline std::optional<Eigen::Isometry3d> place_at_contact(
-    const GraspObject& object, const Eigen::Isometry3d& root, const Vec<7>& q_hand,
-    const Vec3& approach, const GraspSimOptions& sim, double advance = 0.0) {
-  return place_hand_at_contact<models::schunk_sdh>(object, root, q_hand, approach, sim, advance);
-}
 
 /// \p q_hand opened until the SDH at \p root (its palm, object frame) is sim.contact_gap clear of
 /// the object (open_hand_until_clear<models::schunk_sdh>): its proximal joints (fingers and thumb)
@@ -891,41 +856,49 @@ RobotGrasp sdh_from_human(TransferMethod method, const HumanGrasp& g,
   return winding_descriptor(d, Vec3(g.hand_pose.inverse() * p));
 }
 
-/// The transfer task set of the topological method for the arm + SDH: the windings of the SDH's
-/// two curves around the object's centre of mass (interpolated from the start to the human's
-/// values), the collision potential against the object, the approach axis, the joint limits, and
-/// the grasp centre on the human's approach line.
-using TopologicalTaskSet =
-    TaskSet<WindingTask<models::schunk_arm_sdh, 2>, CollisionTask<models::schunk_arm_sdh>,
-            AxisTask<models::schunk_arm_sdh>, JointLimitTask<models::schunk_arm_sdh>,
-            LineTask<models::schunk_arm_sdh>>;
+/// The task set of the topological method for hand-on-arm model \p A (OnArm): the windings of the
+/// hand's curves around a point (interpolated from the start to the targets), the collision
+/// potential against the object, the approach axis of the hand's grasp frame, the joint limits,
+/// and the grasp frame on the source's approach line.
+template <const auto& A>
+using ArmTopologicalTasks =
+    TaskSet<WindingTask<A>, CollisionTask<A>, AxisTask<A>, JointLimitTask<A>, LineTask<A>>;
 
-/// Builds the topological task set for an object at \p T_world_object whose human descriptor is
-/// \p y around \p reference (object frame), with the SDH's approach to be along \p approach
-/// (world) on the line through \p grasp_point (world: the human's grasp centre); \p d holds the
-/// kinematics of the start configuration (the winding targets start from its values).
-[[nodiscard]] inline TopologicalTaskSet topological_tasks(
-    const GraspObject& object, const Eigen::Isometry3d& T_world_object, const Vec2& y,
-    const Vec3& reference, const Vec3& grasp_point, const Vec3& approach,
-    const KinematicsData<models::schunk_arm_sdh>& d, const TransferOptions& options) {
-  constexpr auto& M = models::schunk_arm_sdh;
-  WindingTask<M, 2> winding({0, 1}, T_world_object * reference);
-  const Vec2 w0 = winding.value(d);
-  TopologicalTaskSet set = make_task_set(
-      scheduled(std::move(winding), interpolated_target<2>(w0, y),
+/// The task set of the paper's arm + SDH.
+using TopologicalTaskSet = ArmTopologicalTasks<models::schunk_arm_sdh>;
+
+/// Builds the topological task set of hand \p M on the arm (OnArm<M>) for an object at
+/// \p T_world_object whose source descriptor is \p y around \p reference (object frame), with the
+/// approach of M's grasp frame (hand_profile) to be along \p approach (world) on the line through
+/// \p grasp_point (world: the source's grasp centre); \p d holds the kinematics of the start
+/// configuration (the winding targets start from its values).
+template <const auto& M>
+  requires HandModel<decltype(M)>
+[[nodiscard]] ArmTopologicalTasks<OnArm<M>::model> topological_tasks(
+    const GraspObject& object, const Eigen::Isometry3d& T_world_object,
+    const Vec<hand_curve_count<M>>& y, const Vec3& reference, const Vec3& grasp_point,
+    const Vec3& approach, const KinematicsData<OnArm<M>::model>& d,
+    const TransferOptions& options) {
+  constexpr auto& A = OnArm<M>::model;
+  constexpr int K = hand_curve_count<M>;
+  const HandProfile<M> profile = hand_profile<M>();
+  const int frame =
+      A.find_frame(M.frames[static_cast<std::size_t>(profile.frame)].spec.name.view());
+  WindingTask<A> winding(T_world_object * reference);
+  const Vec<K> w0 = winding.value(d);
+  return make_task_set(
+      scheduled(std::move(winding), interpolated_target<K>(w0, y),
                 precision(options.winding_precision_mid, options.winding_precision_end)),
-      scheduled(CollisionTask<M>(object.composite(T_world_object), options.collision_margin),
+      scheduled(CollisionTask<A>(object.composite(T_world_object), options.collision_margin),
                 constant_target<1>(Vec<1>::Zero()),
                 constant_precision(options.collision_precision)),
-      scheduled(AxisTask<M>(M.frame("grasp_centre"), Vec3::UnitZ()),
+      scheduled(AxisTask<A>(frame, profile.axes.approach),
                 constant_target<3>(approach.normalized()),
                 precision(options.approach_precision_mid, options.approach_precision_end)),
-      scheduled(JointLimitTask<M>(), constant_target<M.nq>(Vec<M.nq>::Zero()),
+      scheduled(JointLimitTask<A>(), constant_target<A.nq>(Vec<A.nq>::Zero()),
                 constant_precision(options.limit_precision)),
-      scheduled(LineTask<M>(M.frame("grasp_centre"), grasp_point, approach),
-                constant_target<2>(Vec2::Zero()),
+      scheduled(LineTask<A>(frame, grasp_point, approach), constant_target<2>(Vec2::Zero()),
                 precision(options.line_precision_mid, options.line_precision_end)));
-  return set;
 }
 
 namespace detail {
@@ -957,56 +930,71 @@ bool record_plan(const Problem& problem, const Plan& plan, Out& out) {
 
 }  // namespace detail
 
-/// Topological synergies (the paper): the human's descriptor y (its two largest windings around
-/// the object's centre of mass) becomes the winding target of the SDH's two curves; AICO plans the
-/// 14-DOF arm + SDH from its ready pose with the collision task, the approach direction and (our
-/// addition, docs/transfer.md) the grasp centre on the human's approach line; the object is placed
-/// (turned) so that the human's approach is the SDH's at the ready pose, a little out of reach.
-/// The final hand, without the arm, moves on along its approach until contact, is closed until
-/// contact and shaken.
-[[nodiscard]] inline RobotGrasp transfer_topological(const GraspObject& object, const HumanGrasp& g,
-                                                     const TransferOptions& options = {}) {
-  const auto t0 = detail::Clock::now();
-  constexpr auto& M = models::schunk_arm_sdh;
-  RobotGrasp r;
-  r.method = TransferMethod::topological;
-  r.reason = detail::unusable_human_grasp(g);
-  if (!r.reason.empty()) return r;
-  Vec<14> q0;
-  q0 << options.arm_ready, options.sdh_preshape;
+namespace detail {
+
+// The approach of hand M's grasp frame (hand_profile) in the frame of its root link, at joints q.
+template <const auto& M>
+Vec3 local_approach(const Vec<M.nq>& q) {
+  const HandProfile<M> profile = hand_profile<M>();
   KinematicsData<M> d;
+  forward_kinematics(d, q);
+  return d.frame_R[static_cast<std::size_t>(profile.frame)] * profile.axes.approach;
+}
+
+// The topological method for hand M on the arm (OnArm<M>), the source's grasp frame
+// source_frame (object frame) and descriptor y around reference (object frame) given: the object
+// placed (turned) so that the source's grasp frame maps onto M's at the ready pose
+// (options.arm_ready, base_preshape), pushed out by the backoff; AICO plans arm and hand with
+// topological_tasks; the final hand, without the arm, moves on along its approach until contact,
+// closes until contact and is judged (with second if set). With options.closing_corrections the
+// targets are corrected by the windings that closing leaves and the plan made again (the plan
+// whose closed windings come nearest y is kept). t0: when the transfer started.
+template <const auto& M>
+HandTransfer<M> topological_on_arm(const GraspObject& object, const Eigen::Isometry3d& source_frame,
+                                   const Vec<hand_curve_count<M>>& y, const Vec3& reference,
+                                   const TransferOptions& options, const SecondJudge<M>& second,
+                                   Clock::time_point t0) {
+  constexpr auto& A = OnArm<M>::model;
+  constexpr int K = hand_curve_count<M>;
+  HandTransfer<M> r;
+  r.method = TransferMethod::topological;
+  Vec<A.nq> q0;
+  q0 << options.arm_ready, base_preshape<M>(options);
+  KinematicsData<A> d;
   forward_kinematics(d, q0);
-  const Eigen::Isometry3d gc = frame_pose(d, M.frame("grasp_centre"));
+  const HandProfile<M> profile = hand_profile<M>();
+  Eigen::Isometry3d gc = frame_pose(
+      d, A.find_frame(M.frames[static_cast<std::size_t>(profile.frame)].spec.name.view()));
+  gc.linear() =
+      gc.linear() * palm_rotation(profile.axes, gripper_hand_axes.approach, gripper_hand_axes.up);
   const Vec3 approach = gc.linear().col(2);
-  // The object such that the human grasp centre maps onto the SDH's, pushed out by the backoff.
-  const Eigen::Isometry3d human_centre =
+  // The object such that the source's grasp frame maps onto the hand's, pushed out by the backoff.
+  const Eigen::Isometry3d source_centre =
       Eigen::Translation3d(options.backoff * approach) * gc;  // world
-  const Eigen::Isometry3d T_world_object = human_centre * detail::sdh_grasp_target(g).inverse();
-  const Vec3 reference = winding_reference_point(object, g, options.winding_reference);
-  const Vec2 y = options.winding_reference == WindingReference::centre_of_mass
-                     ? g.descriptor.values
-                     : human_descriptor(g, reference).values;
-  // One plan toward the winding targets `target`: fills r's plan records, and its hand_pose and
-  // q_open with the placed hand; false (r.reason says why) if it cannot be placed.
-  const auto plan_for = [&](const Vec2& target, RobotGrasp& out) {
-    AicoProblem<M, TopologicalTaskSet> problem(
-        topological_tasks(object, T_world_object, target, reference, human_centre.translation(),
-                          approach, d, options),
+  const Eigen::Isometry3d T_world_object = source_centre * source_frame.inverse();
+  constexpr int root_link = A.find_link(M.links[0].spec.name.view());
+  // One plan toward the winding targets `target`: fills out's plan records, and its hand_pose and
+  // q_open with the placed hand; false (out.reason says why) if it cannot be placed.
+  const auto plan_for = [&](const Vec<K>& target, HandTransfer<M>& out) {
+    AicoProblem<A, ArmTopologicalTasks<A>> problem(
+        topological_tasks<M>(object, T_world_object, target, reference, source_centre.translation(),
+                             approach, d, options),
         q0, options.aico);
     AicoWorkspace ws(problem);
-    const AicoResult<M.nq> plan = solve(problem, ws);
-    if (!detail::record_plan(problem, plan, out)) return false;
-    KinematicsData<M> dt;
+    const AicoResult<A.nq> plan = solve(problem, ws);
+    if (!record_plan(problem, plan, out)) return false;
+    KinematicsData<A> dt;
     forward_kinematics(dt, plan.q.back());
-    const Eigen::Isometry3d root = T_world_object.inverse() * link_pose(dt, M.link("palm"));
-    const Vec<7> q_hand = clamp_to_limits<models::schunk_sdh>(plan.q.back().tail<7>());
-    const auto cleared = place_at_contact(object, root, q_hand, root.linear().col(2), options.sim,
-                                          options.final_approach);
+    const Eigen::Isometry3d root = T_world_object.inverse() * link_pose(dt, root_link);
+    const Vec<M.nq> q_hand = clamp_to_limits<M>(Vec<M.nq>(plan.q.back().template tail<M.nq>()));
+    const auto cleared =
+        place_hand_at_contact<M>(object, root, q_hand, root.linear() * local_approach<M>(q_hand),
+                                 options.sim, options.final_approach);
     if (!cleared) {
       out.reason = "the planned hand penetrates the object";
       return false;
     }
-    const std::string unusable = detail::unusable_sdh_pose(*cleared, q_hand);
+    const std::string unusable = unusable_hand_pose<M>(*cleared, q_hand);
     if (!unusable.empty()) {
       out.reason = unusable;
       return false;
@@ -1017,21 +1005,18 @@ bool record_plan(const Problem& problem, const Plan& plan, Out& out) {
   };
   r.source_winding = y;
   const bool placed = plan_for(y, r);
-  // Closing corrections: the windings the closing leaves, measured by closing the placed hand,
-  // correct the targets (target += y - closed windings) and the plan is made again; the plan
-  // whose closed windings come nearest y is kept.
   if (placed && options.closing_corrections > 0) {
-    const auto closed_windings = [&](const RobotGrasp& c) {
-      auto scene = detail::sdh_scene(object, c.hand_pose, c.q_open, options);
-      return detail::sdh_windings(reference, c.hand_pose,
-                                  close_hand(scene, options.sim.close).q_closed);
+    const auto closed_windings = [&](const HandTransfer<M>& c) {
+      auto scene = hand_scene<M>(object, c.hand_pose, c.q_open, options.sim);
+      return hand_windings<M>(reference, c.hand_pose,
+                              close_hand(scene, options.sim.close).q_closed);
     };
-    Vec2 w = closed_windings(r);
+    Vec<K> w = closed_windings(r);
     double error = (w - y).norm();
-    Vec2 target = y;
+    Vec<K> target = y;
     for (int k = 0; k < options.closing_corrections; ++k) {
       target = (target + (y - w)).cwiseMax(0.0);
-      RobotGrasp c;
+      HandTransfer<M> c;
       c.method = r.method;
       c.source_winding = y;
       if (!plan_for(target, c)) break;
@@ -1042,15 +1027,42 @@ bool record_plan(const Problem& problem, const Plan& plan, Out& out) {
       }
     }
   }
-  r.plan_ms = detail::ms_since(t0);
+  r.plan_ms = ms_since(t0);
   if (!placed) return r;
   r.planned = true;
   const Eigen::Isometry3d hand = r.hand_pose;
-  const Vec<7> q_open = r.q_open;
-  simulate_sdh_grasp(object, hand, q_open, options, r);
+  const Vec<M.nq> q_open = r.q_open;
+  simulate_hand_grasp<M>(object, hand, q_open, options.sim, second, r);
   if (options.winding_reference != WindingReference::centre_of_mass)
-    r.winding = detail::sdh_windings(reference, hand, r.q_closed);
+    r.winding = hand_windings<M>(reference, hand, r.q_closed);
   return r;
+}
+
+}  // namespace detail
+
+/// Topological synergies (the paper): the human's descriptor y (its two largest windings around
+/// the object's centre of mass) becomes the winding target of the SDH's two curves; AICO plans the
+/// 14-DOF arm + SDH from its ready pose with the collision task, the approach direction and (our
+/// addition, docs/transfer.md) the grasp centre on the human's approach line; the object is placed
+/// (turned) so that the human's approach is the SDH's at the ready pose, a little out of reach.
+/// The final hand, without the arm, moves on along its approach until contact, is closed until
+/// contact and shaken (detail::topological_on_arm, which any hand on the arm shares:
+/// transfer_hand_on_arm).
+[[nodiscard]] inline RobotGrasp transfer_topological(const GraspObject& object, const HumanGrasp& g,
+                                                     const TransferOptions& options = {}) {
+  const auto t0 = detail::Clock::now();
+  if (std::string problem = detail::unusable_human_grasp(g); !problem.empty()) {
+    RobotGrasp r;
+    r.method = TransferMethod::topological;
+    r.reason = std::move(problem);
+    return r;
+  }
+  const Vec3 reference = winding_reference_point(object, g, options.winding_reference);
+  const Vec2 y = options.winding_reference == WindingReference::centre_of_mass
+                     ? g.descriptor.values
+                     : human_descriptor(g, reference).values;
+  return detail::topological_on_arm<models::schunk_sdh>(
+      object, detail::sdh_grasp_target(g), y, reference, options, options.sim.second_judge_sdh, t0);
 }
 
 /// \p options as the topological variant \p method runs with (see TransferMethod): the paper's

@@ -40,7 +40,7 @@ inline constexpr auto schunk_arm = [] {
   constexpr double odd = pi, even = 1.97;
   return make_model(
       "schunk_arm",
-      links(root("base"), revolute("arm_1", "base", arm_a1, ex, -odd, odd),
+      links(root("arm_base"), revolute("arm_1", "arm_base", arm_a1, ex, -odd, odd),
             revolute("arm_2", "arm_1", arm_a2, ex, -even, even),
             revolute("arm_3", "arm_2", arm_a3, ex, -odd, odd),
             revolute("arm_4", "arm_3", arm_a4, ex, -even, even),
@@ -49,7 +49,7 @@ inline constexpr auto schunk_arm = [] {
             revolute("arm_7", "arm_6", arm_a7, ex, -odd, odd)),
       // Each module as a capsule from its joint to the next, radii of the PRL modules.
       shapes(
-          cylinder("base", at(0, 0, 0.125), 0.12, 0.125),
+          cylinder("arm_base", at(0, 0, 0.125), 0.12, 0.125),
           capsule("arm_1", {0, 0, 0}, arm_a2.p, 0.08), capsule("arm_2", {0, 0, 0}, arm_a3.p, 0.08),
           capsule("arm_3", {0, 0, 0}, arm_a4.p, 0.07), capsule("arm_4", {0, 0, 0}, arm_a5.p, 0.07),
           capsule("arm_5", {0, 0, 0}, arm_a6.p, 0.06), capsule("arm_6", {0, 0, 0}, arm_a7.p, 0.06),
