@@ -1,0 +1,190 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// The box decomposition of a point set (BADGr: Huebner, Ruthotto and Kragic 2008): the point
+/// set's minimum-volume bounding box, split in two along the plane that most reduces the summed
+/// volume of the two halves' boxes, recursively, while a split is worth it (the halves' boxes
+/// fill at most `gain` of their parent's volume) and each half keeps enough points.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <span>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
+
+#include <topograsp/core/constants.hpp>
+#include <topograsp/core/eigen.hpp>
+#include <topograsp/core/error.hpp>
+#include <topograsp/geometry/mesh.hpp>
+
+namespace topograsp {
+
+/// An oriented box: centre and axes (columns of R), half extents along them (m).
+struct OrientedBox {
+  Mat3 R = Mat3::Identity();
+  Vec3 centre = Vec3::Zero();
+  Vec3 half = Vec3::Zero();
+  [[nodiscard]] double volume() const noexcept { return 8.0 * half.prod(); }
+};
+
+/// The options of box_decomposition().
+struct BoxDecompositionOptions {
+  /// A box is split when its two halves' boxes fill at most this fraction of its volume
+  /// (Huebner et al.'s volume gain; 0.9: a split must save a tenth of the volume).
+  double gain = 0.9;
+  /// Fewest points a half may keep (a split leaving fewer is not taken).
+  int min_points = 20;
+  /// Split planes tried per box axis, evenly spaced over the box.
+  int planes = 24;
+  /// Deepest split (a box is split at most this many times on its way from the root).
+  int max_depth = 6;
+  /// The points' spacing (m): each point stands for a cube of this side, so every box is grown
+  /// by half of it on each side. Without it a split of sampled points always gains the gap of one
+  /// spacing between the halves, and a box of a fine grid is split again and again.
+  double resolution = 0.005;
+};
+
+namespace detail {
+
+// The box of `points` with axes R (columns): the smallest such box.
+inline OrientedBox box_with_axes(std::span<const Vec3> points, const Mat3& R) {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const Vec3& p : points) {
+    const Vec3 l = R.transpose() * p;
+    lo = lo.cwiseMin(l);
+    hi = hi.cwiseMax(l);
+  }
+  OrientedBox b;
+  b.R = R;
+  b.centre = R * (0.5 * (lo + hi));
+  b.half = 0.5 * (hi - lo);
+  return b;
+}
+
+}  // namespace detail
+
+/// An approximately minimum-volume box around \p points (at least one, all finite): the box along
+/// the principal axes of the points, then improved by turning it about each of its axes in turn
+/// (a search over 90 degrees in 1-degree steps, refined to 0.05 degrees) while that shrinks it.
+/// \throws topograsp::invalid_argument naming "points" if empty or not finite.
+[[nodiscard]] inline OrientedBox minimum_volume_box(std::span<const Vec3> points) {
+  if (points.empty()) detail::throw_invalid_argument("points", "expected at least one point");
+  Vec3 mean = Vec3::Zero();
+  for (const Vec3& p : points) {
+    if (!p.allFinite()) detail::throw_invalid_argument("points", "a point is not finite");
+    mean += p;
+  }
+  mean /= static_cast<double>(points.size());
+  Mat3 cov = Mat3::Zero();
+  for (const Vec3& p : points) cov += (p - mean) * (p - mean).transpose();
+  Mat3 R = Eigen::SelfAdjointEigenSolver<Mat3>(cov).eigenvectors();
+  if (R.determinant() < 0.0) R.col(2) = -R.col(2);
+  OrientedBox best = detail::box_with_axes(points, R);
+  for (int round = 0; round < 3; ++round) {
+    bool improved = false;
+    for (int axis = 0; axis < 3; ++axis) {
+      const Mat3 base = best.R;
+      double chosen = 0.0, span = deg(45.0), step = deg(1.0);
+      for (int refine = 0; refine < 2; ++refine) {
+        const double centre = chosen;
+        for (double a = centre - span; a <= centre + span + 1e-12; a += step) {
+          const OrientedBox b = detail::box_with_axes(
+              points, base * Eigen::AngleAxisd(a, Vec3::Unit(axis)).toRotationMatrix());
+          if (b.volume() < best.volume() * (1.0 - 1e-9)) {
+            best = b;
+            chosen = a;
+            improved = true;
+          }
+        }
+        span = step;
+        step = deg(0.05);
+      }
+    }
+    if (!improved) break;
+  }
+  return best;
+}
+
+/// The box decomposition of \p points (object frame), BADGr's: the minimum-volume box of all
+/// points, split recursively as BoxDecompositionOptions says. Deterministic.
+/// \throws topograsp::invalid_argument naming "points" (empty or not finite) or "options" (gain
+///         outside (0, 1], min_points < 1, planes < 1, max_depth < 0, resolution negative or not
+///         finite).
+[[nodiscard]] inline std::vector<OrientedBox> box_decomposition(
+    std::span<const Vec3> points, const BoxDecompositionOptions& options = {}) {
+  if (!(options.gain > 0.0 && options.gain <= 1.0) || options.min_points < 1 ||
+      options.planes < 1 || options.max_depth < 0 ||
+      !(options.resolution >= 0.0 && std::isfinite(options.resolution)))
+    detail::throw_invalid_argument("options",
+                                   "expected gain in (0, 1], min_points >= 1, planes >= 1, "
+                                   "max_depth >= 0 and a finite resolution >= 0");
+  std::vector<OrientedBox> out;
+  struct Work {
+    std::vector<Vec3> points;
+    int depth;
+  };
+  std::vector<Work> todo{{std::vector<Vec3>(points.begin(), points.end()), 0}};
+  while (!todo.empty()) {
+    Work w = std::move(todo.back());
+    todo.pop_back();
+    const auto grown = [&](OrientedBox b) {
+      b.half.array() += 0.5 * options.resolution;
+      return b;
+    };
+    const OrientedBox box = grown(minimum_volume_box(w.points));
+    double best = options.gain * box.volume();
+    std::vector<Vec3> lower, upper, below, above;
+    if (w.depth < options.max_depth)
+      for (int axis = 0; axis < 3; ++axis)
+        for (int k = 1; k < options.planes; ++k) {
+          const double cut = -box.half[axis] + 2.0 * box.half[axis] * k / options.planes;
+          below.clear();
+          above.clear();
+          for (const Vec3& p : w.points)
+            ((box.R.col(axis).dot(p - box.centre) < cut) ? below : above).push_back(p);
+          if (static_cast<int>(below.size()) < options.min_points ||
+              static_cast<int>(above.size()) < options.min_points)
+            continue;
+          const double v =
+              grown(minimum_volume_box(below)).volume() + grown(minimum_volume_box(above)).volume();
+          if (v < best) {
+            best = v;
+            lower = below;
+            upper = above;
+          }
+        }
+    if (lower.empty()) {
+      out.push_back(box);
+      continue;
+    }
+    todo.push_back({std::move(upper), w.depth + 1});
+    todo.push_back({std::move(lower), w.depth + 1});
+  }
+  return out;
+}
+
+/// Points on the surface of \p mesh about \p spacing (m) apart: each triangle's vertices and a
+/// grid of points over it, as many as its area asks. Deterministic.
+/// \throws topograsp::invalid_argument naming "spacing" (not positive and finite).
+[[nodiscard]] inline std::vector<Vec3> surface_points(const TriangleMesh& mesh, double spacing) {
+  require_positive(spacing, "spacing");
+  std::vector<Vec3> out(mesh.vertices);
+  for (const auto& t : mesh.triangles) {
+    const Vec3 &a = mesh.vertices[static_cast<std::size_t>(t[0])],
+               &b = mesh.vertices[static_cast<std::size_t>(t[1])],
+               &c = mesh.vertices[static_cast<std::size_t>(t[2])];
+    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    const int n = static_cast<int>(std::ceil(longest / spacing));
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j) {
+        if ((i == 0 && j == 0) || (i == n && j == 0) || (i == 0 && j == n)) continue;
+        const double u = static_cast<double>(i) / n, v = static_cast<double>(j) / n;
+        out.push_back(a + u * (b - a) + v * (c - a));
+      }
+  }
+  return out;
+}
+
+}  // namespace topograsp
