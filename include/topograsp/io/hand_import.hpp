@@ -46,6 +46,7 @@
 
 #include <topograsp/core/constants.hpp>
 #include <topograsp/core/error.hpp>
+#include <topograsp/io/mesh_file.hpp>
 #include <topograsp/io/xml.hpp>
 #include <topograsp/model/spec.hpp>
 #include <topograsp/physics/mass_properties.hpp>
@@ -183,96 +184,27 @@ inline Eigen::Isometry3d translation_of(const std::vector<double>& v) {
   return T;
 }
 
-// A triangle mesh read from a file: its vertices and, three indices each, its triangles.
-struct MeshData {
-  std::vector<Vec3> vertices;
-  std::vector<std::array<std::size_t, 3>> triangles;
-};
-
-// The STL (binary or ASCII) or OBJ mesh file at path; no vertices if it cannot be read.
-inline MeshData read_mesh(const std::string& path) {
-  std::error_code not_regular;  // a regular file only: never a device or a pipe without end
-  if (!std::filesystem::is_regular_file(path, not_regular)) return {};
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return {};
-  const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  MeshData out;
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  // Each line starting with `tag`: its numbers, handed to `take`.
-  const auto lines = [&](std::string_view tag, auto&& take) {
-    std::size_t at = 0;
-    while (at < data.size()) {
-      std::size_t end = data.find('\n', at);
-      if (end == std::string::npos) end = data.size();
-      const std::string_view line(data.data() + at, end - at);
-      const std::size_t s = line.find_first_not_of(" \t");
-      if (s != std::string_view::npos && line.substr(s, tag.size()) == tag)
-        take(line.substr(s + tag.size()));
-      at = end + 1;
-    }
-  };
-  const auto three_numbers = [&](std::string_view rest) {
-    double v[3];
-    int n = 0;
-    std::size_t k = 0;
-    while (n < 3 && k < rest.size()) {
-      while (k < rest.size() && (rest[k] == ' ' || rest[k] == '\t')) ++k;
-      const auto [p, ec] = std::from_chars(rest.data() + k, rest.data() + rest.size(), v[n]);
-      if (ec != std::errc()) break;
-      k = static_cast<std::size_t>(p - rest.data());
-      ++n;
-    }
-    if (n == 3) out.vertices.emplace_back(v[0], v[1], v[2]);
-  };
-  if (ext == ".obj") {
-    lines("v ", three_numbers);
-    lines("f ", [&](std::string_view rest) {  // "f a/b/c d/e/f ...": a fan of triangles
-      std::vector<std::size_t> face;
-      std::size_t k = 0;
-      while (k < rest.size()) {
-        while (k < rest.size() && (rest[k] == ' ' || rest[k] == '\t' || rest[k] == '\r')) ++k;
-        long long i = 0;
-        const auto [p, ec] = std::from_chars(rest.data() + k, rest.data() + rest.size(), i);
-        if (ec != std::errc()) break;
-        const long long n = static_cast<long long>(out.vertices.size());
-        const long long index = i < 0 ? n + i : i - 1;
-        if (index < 0 || index >= n) return;  // a face outside the vertices: left out
-        face.push_back(static_cast<std::size_t>(index));
-        k = static_cast<std::size_t>(p - rest.data());
-        while (k < rest.size() && rest[k] != ' ' && rest[k] != '\t') ++k;
-      }
-      for (std::size_t t = 2; t < face.size(); ++t)
-        out.triangles.push_back({face[0], face[t - 1], face[t]});
-    });
-  } else if (data.size() >= 84) {
-    std::uint32_t n = 0;
-    std::memcpy(&n, data.data() + 80, 4);
-    if (84 + 50 * static_cast<std::uint64_t>(n) == data.size()) {
-      for (std::uint32_t t = 0; t < n; ++t)
-        for (int k = 0; k < 3; ++k) {
-          float f[3];
-          std::memcpy(f, data.data() + 84 + 50 * static_cast<std::size_t>(t) + 12 + 12 * k, 12);
-          out.vertices.emplace_back(f[0], f[1], f[2]);
-        }
-    } else {
-      lines("vertex ", three_numbers);
-    }
-    for (std::size_t t = 0; t + 2 < out.vertices.size(); t += 3)
-      out.triangles.push_back({t, t + 1, t + 2});
+// The STL (binary or ASCII) or OBJ mesh file at path (read_mesh_file); no vertices if it cannot
+// be read, and *why says why.
+inline TriangleMesh read_mesh(const std::string& path, std::string* why = nullptr) {
+  try {
+    return read_mesh_file(path);
+  } catch (const mesh_error& e) {
+    if (why) *why = e.what();
+    return {};
   }
-  return out;
 }
 
 // The volume enclosed by a closed triangle mesh scaled by `scale`, and its centroid (the sum of
 // the signed tetrahedra from the origin to each triangle).
-inline std::pair<double, Vec3> mesh_volume(const MeshData& m, const Vec3& scale) {
+inline std::pair<double, Vec3> mesh_volume(const TriangleMesh& m, const Vec3& scale) {
   double volume = 0.0;
   Vec3 moment = Vec3::Zero();
+  const auto at = [&](int i) {
+    return Vec3(m.vertices[static_cast<std::size_t>(i)].cwiseProduct(scale));
+  };
   for (const auto& t : m.triangles) {
-    const Vec3 a = m.vertices[t[0]].cwiseProduct(scale), b = m.vertices[t[1]].cwiseProduct(scale),
-               c = m.vertices[t[2]].cwiseProduct(scale);
+    const Vec3 a = at(t[0]), b = at(t[1]), c = at(t[2]);
     const double v = a.dot(b.cross(c)) / 6.0;
     volume += v;
     moment += v * (a + b + c) / 4.0;
@@ -303,11 +235,14 @@ inline Eigen::Isometry3d segment_isometry(const Vec3& a, const Vec3& b) {
 inline void add_box_of_mesh(const Importer& im, const XmlElement& e, const std::string& path,
                             const Vec3& scale, const Eigen::Isometry3d& pose, const Name& link,
                             bool skip_missing, ImportedHand& out) {
-  const std::vector<Vec3> v = read_mesh(path).vertices;
+  std::string why;
+  const std::vector<Vec3> v = read_mesh(path, &why).vertices;
   if (v.empty()) {
     if (!skip_missing)
-      im.fail(e, "cannot read the mesh \"" + path +
-                     "\" (STL or OBJ; give --mesh-dir, or --skip-missing-meshes to leave it out)");
+      im.fail(
+          e,
+          "cannot read the mesh \"" + path +
+              "\" (STL or OBJ; give --mesh-dir, or --skip-missing-meshes to leave it out): " + why);
     out.notes.push_back("the collision mesh \"" + path + "\" of link " + std::string(link.view()) +
                         " could not be read and was left out");
     return;
@@ -837,7 +772,7 @@ struct MjcfContext {
       const auto it = meshes.find(*m);
       if (it == meshes.end()) im.fail(g, "no mesh asset called \"" + *m + "\"");
       const auto& [path, scale] = it->second;
-      const MeshData mesh = read_mesh(path);
+      const TriangleMesh mesh = read_mesh(path);
       std::pair<double, Vec3> mass{0.0, pose.translation()};
       if (!mesh.vertices.empty()) {
         const auto [volume, centroid] = mesh_volume(mesh, scale);
