@@ -52,6 +52,34 @@ TEST_CASE("an L splits into its two boxes", "[geometry][boxes]") {
   CHECK(volume < 0.5 * minimum_volume_box(points).volume());
 }
 
+TEST_CASE("the error of boxes against a mesh: none for the box itself, the gaps of a wrong box",
+          "[geometry][boxes]") {
+  // The box [0, 0.2] x [0, 0.1] x [0, 0.05] as a closed mesh.
+  TriangleMesh m;
+  for (int i = 0; i < 8; ++i)
+    m.vertices.emplace_back(i & 1 ? 0.2 : 0.0, i & 2 ? 0.1 : 0.0, i & 4 ? 0.05 : 0.0);
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : quads) {
+    m.triangles.push_back({q[0], q[1], q[2]});
+    m.triangles.push_back({q[0], q[2], q[3]});
+  }
+  OrientedBox exact;
+  exact.centre = Vec3(0.1, 0.05, 0.025);
+  exact.half = Vec3(0.1, 0.05, 0.025);
+  const DecompositionError e = decomposition_error(m, std::vector<OrientedBox>{exact}, 0.01);
+  CHECK(e.volume_ratio == Approx(1.0));
+  CHECK(e.max_distance < 1e-12);
+  OrientedBox grown = exact;
+  grown.half += Vec3::Constant(0.01);  // 1 cm beyond every face
+  const DecompositionError g = decomposition_error(m, std::vector<OrientedBox>{grown}, 0.01);
+  CHECK(g.volume_ratio > 1.5);
+  CHECK(g.max_distance == Approx(0.01));
+  CHECK(g.mean_distance == Approx(0.01));
+  CHECK_THROWS_WITH(decomposition_error(m, std::vector<OrientedBox>{}, 0.01),
+                    Catch::StartsWith("boxes: "));
+}
+
 TEST_CASE("the box decomposition refuses bad input", "[geometry][boxes][bad-input]") {
   CHECK_THROWS_WITH(minimum_volume_box(std::vector<Vec3>{}), Catch::StartsWith("points: "));
   const std::vector<Vec3> nan{Vec3(0, 0, std::numeric_limits<double>::quiet_NaN())};

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -185,6 +186,44 @@ inline OrientedBox box_with_axes(std::span<const Vec3> points, const Mat3& R) {
       }
   }
   return out;
+}
+
+/// The signed distance (m) from \p p to the surface of \p box: negative inside.
+[[nodiscard]] inline double signed_distance(const OrientedBox& box, const Vec3& p) {
+  const Vec3 d = (box.R.transpose() * (p - box.centre)).cwiseAbs() - box.half;
+  return d.cwiseMax(0.0).norm() + std::min(d.maxCoeff(), 0.0);
+}
+
+/// How well boxes stand for the solid that a mesh bounds (box_decomposition's error).
+struct DecompositionError {
+  double volume_ratio = 0.0;  ///< the boxes' summed volume over the mesh's (overlaps counted twice)
+  double mean_distance = 0.0;  ///< mean over the mesh's surface points of the nearest box face (m)
+  double max_distance = 0.0;   ///< the largest such distance (m)
+};
+
+/// The error of \p boxes against the closed \p mesh: the volume ratio, and the distance from each
+/// point of the mesh's surface (surface_points at \p spacing) to the nearest face of any box,
+/// min over the boxes of |signed_distance|: 0 where a box face lies on the surface, the gap where
+/// the surface is outside every box or the overhang where a box reaches beyond it.
+/// \throws topograsp::invalid_argument naming "mesh" (require_closed_mesh), "boxes" (none) or
+///         "spacing".
+[[nodiscard]] inline DecompositionError decomposition_error(const TriangleMesh& mesh,
+                                                            std::span<const OrientedBox> boxes,
+                                                            double spacing) {
+  if (boxes.empty()) detail::throw_invalid_argument("boxes", "expected at least one box");
+  DecompositionError e;
+  double box_volume = 0.0;
+  for (const OrientedBox& b : boxes) box_volume += b.volume();
+  e.volume_ratio = box_volume / mesh_mass_properties(mesh, 1.0).mass;
+  const std::vector<Vec3> points = surface_points(mesh, spacing);
+  for (const Vec3& p : points) {
+    double d = std::numeric_limits<double>::infinity();
+    for (const OrientedBox& b : boxes) d = std::min(d, std::abs(signed_distance(b, p)));
+    e.mean_distance += d;
+    e.max_distance = std::max(e.max_distance, d);
+  }
+  e.mean_distance /= static_cast<double>(points.size());
+  return e;
 }
 
 }  // namespace topograsp
