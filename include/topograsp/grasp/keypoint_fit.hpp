@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// The human hand model fitted to a recorded grasp's 21 keypoints (io/keypoint_grasp.hpp): its
+/// palm placed by the best rigid fit of the palm's keypoints (wrist, thumb CMC, the four finger
+/// MCPs), then its free base and 20 joints fitted by damped least squares, within the joint
+/// limits, to all 21 keypoints. The result is a source grasp for any transfer.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <string_view>
+
+#include <Eigen/SVD>
+
+#include <topograsp/grasp/hand_grasp.hpp>
+#include <topograsp/io/keypoint_grasp.hpp>
+#include <topograsp/kinematics/jacobian.hpp>
+
+namespace topograsp {
+
+/// The human hand fitted to keypoints, and how well.
+struct KeypointFit {
+  HandGrasp<models::human_hand> grasp;  ///< the palm's pose (object frame) and the 20 joints
+  double rms_error = 0.0;               ///< root mean square keypoint error (m)
+  double max_error = 0.0;               ///< the largest keypoint error (m)
+  int iterations = 0;                   ///< least-squares steps taken
+};
+
+namespace detail {
+
+// The point of the human model (on its free base) that keypoint i stands for: a joint's origin,
+// a fingertip frame, or the wrist (the palm's origin).
+inline std::array<LinkPoint, keypoint_count> human_keypoint_points() {
+  constexpr auto& F = models::human_hand_free;
+  constexpr std::array<std::string_view, keypoint_count> names{
+      "palm",       "thumb_cmc1", "thumb_mcp", "thumb_ip",   "thumb_tip",  "index_mcp",
+      "index_pip",  "index_dip",  "index_tip", "middle_mcp", "middle_pip", "middle_dip",
+      "middle_tip", "ring_mcp",   "ring_pip",  "ring_dip",   "ring_tip",   "pinky_mcp",
+      "pinky_pip",  "pinky_dip",  "pinky_tip"};
+  std::array<LinkPoint, keypoint_count> out{};
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const int link = F.find_link(names[i]);
+    if (link >= 0) {
+      out[i].link = link;
+      continue;
+    }
+    const Frame& f = F.frames[static_cast<std::size_t>(F.find_frame(names[i]))];
+    out[i].link = f.link;
+    const Vec3 t = Pose(f.spec.offset).translation();
+    out[i].offset = {t.x(), t.y(), t.z()};
+  }
+  return out;
+}
+
+// The rotation and translation that best map the points a onto b (least squares, Kabsch).
+inline Eigen::Isometry3d rigid_fit(std::span<const Vec3> a, std::span<const Vec3> b) {
+  Vec3 ca = Vec3::Zero(), cb = Vec3::Zero();
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ca += a[i];
+    cb += b[i];
+  }
+  ca /= static_cast<double>(a.size());
+  cb /= static_cast<double>(b.size());
+  Mat3 h = Mat3::Zero();
+  for (std::size_t i = 0; i < a.size(); ++i) h += (a[i] - ca) * (b[i] - cb).transpose();
+  const Eigen::JacobiSVD<Mat3> svd(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Mat3 d = Mat3::Identity();
+  d(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = svd.matrixV() * d * svd.matrixU().transpose();
+  T.translation() = cb - T.linear() * ca;
+  return T;
+}
+
+}  // namespace detail
+
+/// The human hand model fitted to the keypoints of \p g: started from the palm's rigid fit with
+/// the joints at zero (clamped to their limits), then at most \p iterations damped least-squares
+/// steps (Levenberg-Marquardt) over the 6 base coordinates and the 20 joints, joints kept within
+/// their limits. The keypoints stand for the joints' origins (CMC, MCP, PIP, DIP, IP), the
+/// fingertips and the wrist (the palm's origin) of the model.
+/// \throws topograsp::invalid_argument naming "keypoints" if a keypoint is not finite, or
+///         "iterations" if it is negative.
+[[nodiscard]] inline KeypointFit fit_human_hand(const KeypointGrasp& g, int iterations = 200) {
+  for (const Vec3& k : g.keypoints)
+    if (!k.allFinite()) detail::throw_invalid_argument("keypoints", "a keypoint is not finite");
+  if (iterations < 0) detail::throw_invalid_argument("iterations", "expected >= 0");
+  constexpr auto& h = models::human_hand;
+  constexpr auto& F = models::human_hand_free;
+  const std::array<LinkPoint, keypoint_count> points = detail::human_keypoint_points();
+  // The palm's rigid fit: the wrist, the thumb's CMC and the four MCPs at q = 0.
+  const Vec<h.nq> q0 = clamp_to_limits<h>(Vec<h.nq>::Zero());
+  KinematicsData<F> d;
+  forward_kinematics(d, free_configuration<h>(Eigen::Isometry3d::Identity(), q0));
+  constexpr std::array<std::size_t, 6> palm{0, 1, 5, 9, 13, 17};
+  std::array<Vec3, 6> model, target;
+  for (std::size_t i = 0; i < palm.size(); ++i) {
+    model[i] = world_point(d, points[palm[i]]);
+    target[i] = g.keypoints[palm[i]];
+  }
+  const Eigen::Isometry3d root = detail::rigid_fit(model, target);
+  Vec<F.nq> q = free_configuration<h>(root, q0);
+  const Vec<F.nq> lo = lower_limits<F>(), hi = upper_limits<F>();
+  constexpr int rows = 3 * keypoint_count;
+  const auto residual = [&](const Vec<F.nq>& x, Vec<rows>& e) {
+    forward_kinematics(d, x);
+    for (int i = 0; i < keypoint_count; ++i)
+      e.segment<3>(3 * i) = world_point(d, points[static_cast<std::size_t>(i)]) -
+                            g.keypoints[static_cast<std::size_t>(i)];
+    return e.squaredNorm();
+  };
+  Vec<rows> e;
+  double cost = residual(q, e);
+  double lambda = 1e-3;
+  KeypointFit fit;
+  Mat<rows, F.nq> J;
+  for (int it = 0; it < iterations; ++it) {
+    for (int i = 0; i < keypoint_count; ++i) {
+      const LinkPoint& p = points[static_cast<std::size_t>(i)];
+      J.middleRows<3>(3 * i) = point_jacobian(d, p.link, world_point(d, p));
+    }
+    const Mat<F.nq, F.nq> H = J.transpose() * J + lambda * Mat<F.nq, F.nq>::Identity();
+    const Vec<F.nq> trial = (q - H.ldlt().solve(J.transpose() * e)).cwiseMax(lo).cwiseMin(hi);
+    Vec<rows> et;
+    const double c = residual(trial, et);
+    ++fit.iterations;
+    if (c < cost) {
+      const bool settled = cost - c < 1e-14;
+      q = trial;
+      e = et;
+      cost = c;
+      lambda = std::max(lambda / 3.0, 1e-9);
+      if (settled) break;
+    } else {
+      lambda *= 10.0;
+      (void)residual(q, e);  // restore the kinematics of q
+      if (lambda > 1e8) break;
+    }
+  }
+  forward_kinematics(d, q);
+  fit.grasp.root = link_pose(d, F.find_link(h.links[0].spec.name.view()));
+  fit.grasp.q = q.tail<h.nq>();
+  fit.rms_error = std::sqrt(cost / keypoint_count);
+  for (int i = 0; i < keypoint_count; ++i)
+    fit.max_error = std::max(fit.max_error, e.segment<3>(3 * i).norm());
+  return fit;
+}
+
+/// The keypoints the human hand model \p grasp places (object frame): what fit_human_hand() fits
+/// (a demonstration's keypoints, for a round trip or a file made from a model grasp).
+[[nodiscard]] inline KeypointGrasp human_keypoints(const HandGrasp<models::human_hand>& grasp,
+                                                   std::string object) {
+  constexpr auto& F = models::human_hand_free;
+  const std::array<LinkPoint, keypoint_count> points = detail::human_keypoint_points();
+  KinematicsData<F> d;
+  forward_kinematics(d, free_configuration<models::human_hand>(grasp.root, grasp.q));
+  KeypointGrasp g;
+  g.object = std::move(object);
+  for (std::size_t i = 0; i < points.size(); ++i) g.keypoints[i] = world_point(d, points[i]);
+  return g;
+}
+
+}  // namespace topograsp
