@@ -260,6 +260,16 @@ template <const auto& M>
   return T * local.inverse();
 }
 
+/// The approach of hand \p M's grasp frame (hand_profile) in the frame of its root link, at
+/// joints \p q.
+template <const auto& M>
+[[nodiscard]] Vec3 grasp_approach(const Vec<M.nq>& q) {
+  const HandProfile<M> profile = hand_profile<M>();
+  KinematicsData<M> d;
+  forward_kinematics(d, q);
+  return d.frame_R[static_cast<std::size_t>(profile.frame)] * profile.axes.approach;
+}
+
 /// The windings of hand \p M's curves around \p p (object frame) with its root at \p root (object
 /// frame) and joints \p q.
 template <const auto& M>

@@ -469,11 +469,7 @@ void open_place_and_simulate(const GraspObject& object, const Eigen::Isometry3d&
                              const SecondJudge<M>& second, Clock::time_point t0,
                              HandTransfer<M>& r) {
   const Vec<M.nq> opened = open_hand_until_clear<M>(object, root, q, options.sim);
-  KinematicsData<M> d;
-  forward_kinematics(d, opened);
-  const HandProfile<M> profile = hand_profile<M>();
-  const Vec3 approach =
-      root.linear() * (d.frame_R[static_cast<std::size_t>(profile.frame)] * profile.axes.approach);
+  const Vec3 approach = root.linear() * grasp_approach<M>(opened);
   const auto placed =
       place_hand_at_contact<M>(object, root, opened, approach, options.sim, options.final_approach);
   r.plan_ms = ms_since(t0);
@@ -763,11 +759,9 @@ template <const auto& Target, const auto& Source>
   if (pad) {  // Target's opposition along the source's, the midpoints together
     forward_kinematics(d, preshape);
     const auto [thumb, fingers] = detail::opposition<Target>(d);
-    const HandProfile<Target> profile = hand_profile<Target>();
-    const Vec3 local_approach =
-        d.frame_R[static_cast<std::size_t>(profile.frame)] * profile.axes.approach;
-    root.linear() = palm_rotation(HandAxes{(fingers - thumb).normalized(), local_approach},
-                                  opposition, approach);
+    root.linear() =
+        palm_rotation(HandAxes{(fingers - thumb).normalized(), grasp_approach<Target>(preshape)},
+                      opposition, approach);
     root.translation() = 0.5 * (thumb_s + fingers_s) - root.linear() * (0.5 * (thumb + fingers));
   }
   r.reason = pad ? "pad opposition" : "palm opposition";
@@ -864,9 +858,6 @@ template <const auto& A>
 using ArmTopologicalTasks =
     TaskSet<WindingTask<A>, CollisionTask<A>, AxisTask<A>, JointLimitTask<A>, LineTask<A>>;
 
-/// The task set of the paper's arm + SDH.
-using TopologicalTaskSet = ArmTopologicalTasks<models::schunk_arm_sdh>;
-
 /// Builds the topological task set of hand \p M on the arm (OnArm<M>) for an object at
 /// \p T_world_object whose source descriptor is \p y around \p reference (object frame), with the
 /// approach of M's grasp frame (hand_profile) to be along \p approach (world) on the line through
@@ -932,15 +923,6 @@ bool record_plan(const Problem& problem, const Plan& plan, Out& out) {
 
 namespace detail {
 
-// The approach of hand M's grasp frame (hand_profile) in the frame of its root link, at joints q.
-template <const auto& M>
-Vec3 local_approach(const Vec<M.nq>& q) {
-  const HandProfile<M> profile = hand_profile<M>();
-  KinematicsData<M> d;
-  forward_kinematics(d, q);
-  return d.frame_R[static_cast<std::size_t>(profile.frame)] * profile.axes.approach;
-}
-
 // The topological method for hand M on the arm (OnArm<M>), the source's grasp frame
 // source_frame (object frame) and descriptor y around reference (object frame) given: the object
 // placed (turned) so that the source's grasp frame maps onto M's at the ready pose
@@ -988,7 +970,7 @@ HandTransfer<M> topological_on_arm(const GraspObject& object, const Eigen::Isome
     const Eigen::Isometry3d root = T_world_object.inverse() * link_pose(dt, root_link);
     const Vec<M.nq> q_hand = clamp_to_limits<M>(Vec<M.nq>(plan.q.back().template tail<M.nq>()));
     const auto cleared =
-        place_hand_at_contact<M>(object, root, q_hand, root.linear() * local_approach<M>(q_hand),
+        place_hand_at_contact<M>(object, root, q_hand, root.linear() * grasp_approach<M>(q_hand),
                                  options.sim, options.final_approach);
     if (!cleared) {
       out.reason = "the planned hand penetrates the object";
