@@ -9,6 +9,8 @@
 
 #include <topograsp/geometry/box_decomposition.hpp>
 
+#include "support/meshes.hpp"
+
 using namespace topograsp;
 
 namespace {
@@ -54,16 +56,7 @@ TEST_CASE("an L splits into its two boxes", "[geometry][boxes]") {
 
 TEST_CASE("the error of boxes against a mesh: none for the box itself, the gaps of a wrong box",
           "[geometry][boxes]") {
-  // The box [0, 0.2] x [0, 0.1] x [0, 0.05] as a closed mesh.
-  TriangleMesh m;
-  for (int i = 0; i < 8; ++i)
-    m.vertices.emplace_back(i & 1 ? 0.2 : 0.0, i & 2 ? 0.1 : 0.0, i & 4 ? 0.05 : 0.0);
-  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for (const auto& q : quads) {
-    m.triangles.push_back({q[0], q[1], q[2]});
-    m.triangles.push_back({q[0], q[2], q[3]});
-  }
+  const TriangleMesh m = test::box_mesh(0.2, 0.1, 0.05);
   OrientedBox exact;
   exact.centre = Vec3(0.1, 0.05, 0.025);
   exact.half = Vec3(0.1, 0.05, 0.025);

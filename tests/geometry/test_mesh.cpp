@@ -8,24 +8,12 @@
 
 #include <topograsp/geometry/mesh.hpp>
 
+#include "support/meshes.hpp"
+
 using namespace topograsp;
+using topograsp::test::box_mesh;
 
 namespace {
-
-// The axis-aligned box [0, x] x [0, y] x [0, z], 8 vertices, 12 triangles wound outward.
-TriangleMesh box_mesh(double x, double y, double z) {
-  TriangleMesh m;
-  for (int i = 0; i < 8; ++i)
-    m.vertices.emplace_back(i & 1 ? x : 0.0, i & 2 ? y : 0.0, i & 4 ? z : 0.0);
-  // Each face as a quad (counter-clockwise from outside), split into two triangles.
-  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for (const auto& q : quads) {
-    m.triangles.push_back({q[0], q[1], q[2]});
-    m.triangles.push_back({q[0], q[2], q[3]});
-  }
-  return m;
-}
 
 bool mentions(const std::vector<std::string>& problems, const std::string& text) {
   for (const std::string& p : problems)

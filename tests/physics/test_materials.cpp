@@ -60,6 +60,49 @@ TEST_CASE("a body of two densities has the mass, centre and inertia a hand compu
   CHECK(w.body(b).local_com.x() == Approx(0.05).epsilon(1e-12));
 }
 
+TEST_CASE("a given inertial replaces the shapes' mass properties; one no body can have is refused",
+          "[physics][materials][input]") {
+  // A mesh object's boxes stand in for its surface; its mesh gives the mass properties.
+  MassProperties<double> given;
+  given.mass = 0.3;
+  given.com = Vec3(0.02, -0.01, 0.05);
+  given.inertia = Vec3(4e-4, 5e-4, 3e-4).asDiagonal();
+  given.inertia(0, 1) = given.inertia(1, 0) = 1e-5;
+  World<double> w;
+  BodyDesc d;
+  d.shapes = two_cubes;
+  d.mass = 5.0;  // not used
+  d.inertial = given;
+  d.pose = at(1.0, 2.0, 3.0);
+  const int b = w.add_body(d);
+  CHECK(w.body(b).mass == 0.3);
+  CHECK(w.body(b).local_com == given.com);
+  CHECK(w.body(b).inertia == given.inertia);
+  CHECK(w.body(b).x.isApprox(Vec3(1.02, 1.99, 3.05), 1e-15));
+  CHECK(w.body(b).inv_inertia_local.isApprox(given.inertia.inverse(), 1e-12));
+  const auto refused = [&](MassProperties<double> m, const char* name) {
+    World<double> v;
+    BodyDesc e = d;
+    e.inertial = m;
+    CHECK_THROWS_WITH(v.add_body(e), Catch::StartsWith(name));
+  };
+  MassProperties<double> bad = given;
+  bad.mass = 0.0;
+  refused(bad, "desc.inertial.mass: ");
+  bad = given;
+  bad.com.x() = std::numeric_limits<double>::quiet_NaN();
+  refused(bad, "desc.inertial.com: ");
+  bad = given;
+  bad.inertia(0, 2) = 1e-4;  // not symmetric
+  refused(bad, "desc.inertial.inertia: ");
+  bad = given;
+  bad.inertia = Vec3(1e-4, 1e-4, 3e-4).asDiagonal();  // A + B < C: no mass distribution has it
+  refused(bad, "desc.inertial.inertia: ");
+  bad = given;
+  bad.inertia = Vec3(-1e-4, 5e-4, 3e-4).asDiagonal();
+  refused(bad, "desc.inertial.inertia: ");
+}
+
 TEST_CASE("bad per-shape densities throw naming the argument", "[physics][materials][input]") {
   const std::array<double, 1> one{1000.0};
   const std::array<double, 2> negative{1000.0, -1.0};

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -34,6 +35,9 @@ struct ObjectSpec {
   /// Coulomb friction coefficient of each shape against every hand link, one per shape; empty =
   /// HandSceneOptions::friction for every pair.
   std::vector<double> part_friction{};
+  /// The object's mass, centre of mass and inertia when its shapes only approximate it (a mesh
+  /// object: GraspObject::inertial); then mass, density and part_density are not used.
+  std::optional<MassProperties<double>> inertial{};
 };
 
 /// The parameters of a HandScene beyond the stepper's.
@@ -98,9 +102,10 @@ class HandScene {
   /// a bad shape, a non-positive mass (or density when the mass is 0 and no part densities are
   /// given), a part_density or part_friction whose size is not the number of shapes
   /// ("object.part_density", "object.part_friction") or with an entry that is not positive and
-  /// finite (part_density) or not in [0, 1e6] (part_friction), named with its index, or bad
-  /// options; and naming "model" for a model whose actuated joint has no effort or velocity
-  /// limit. part_friction is set on every pair of a hand link's shape and that part.
+  /// finite (part_density) or not in [0, 1e6] (part_friction), named with its index, an inertial
+  /// that is not physical ("object.inertial.mass", ".com", ".inertia"), or bad options; and naming
+  /// "model" for a model whose actuated joint has no effort or velocity limit. part_friction is set
+  /// on every pair of a hand link's shape and that part.
   HandScene(const Eigen::Isometry3d& hand_pose, const Config& q, const ObjectSpec& object,
             const HandSceneOptions& options = {})
       : world_(options.stepper), options_(options) {
@@ -131,7 +136,7 @@ class HandScene {
         detail::throw_invalid_argument(
             name, "expected at most 1e6, got " + std::to_string(object.part_friction[i]));
     }
-    if (!(object.mass > 0.0)) {
+    if (!object.inertial && !(object.mass > 0.0)) {
       if (object.mass != 0.0) require_positive(object.mass, "object.mass");
       if (object.part_density.empty())
         require_positive(object.density, "object.density (the mass is 0)");
@@ -184,6 +189,7 @@ class HandScene {
     o.mass = object.mass;
     o.density = object.density;
     o.shape_density = object.part_density;
+    o.inertial = object.inertial;
     o.friction = options.friction;
     try {
       object_ = world_.add_body(o);

@@ -168,6 +168,7 @@ template <const auto& M>
   object.validate();
   ObjectSpec spec{object.parts, Pose{}, object.mass, 0.0};
   spec.part_density = object.densities;
+  spec.inertial = object.inertial;
   if (friction > 0.0)
     spec.part_friction.assign(object.parts.size(), friction);
   else

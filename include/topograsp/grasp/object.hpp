@@ -142,6 +142,10 @@ struct GraspObject {
   std::vector<GraspBox> boxes;      ///< the box decomposition, object frame
   std::vector<Material> materials;  ///< one per part: what its surface and body are made of
   std::vector<double> densities;    ///< one per part: its effective density (kg/m^3)
+  /// The mass properties (object frame) when the parts only approximate the object: a mesh
+  /// object's boxes (mesh_object()) stand in for its surface, its closed mesh gives its mass,
+  /// centre of mass and inertia. Empty for an object made of its parts.
+  std::optional<MassProperties<double>> inertial{};
 
   /// The object placed at \p T_world_object, as a geometry Composite (world frame).
   [[nodiscard]] Composite composite(
@@ -154,10 +158,11 @@ struct GraspObject {
     return Composite(std::move(prims));
   }
 
-  /// The centre of mass in the object frame: the parts weighted by density times volume (the
-  /// volume-weighted centroid when no densities are given). Throws as validate() for a bad
-  /// object.
+  /// The centre of mass in the object frame: the inertial's when given, else the parts weighted by
+  /// density times volume (the volume-weighted centroid when no densities are given). Throws as
+  /// validate() for a bad object.
   [[nodiscard]] Vec3 centre_of_mass() const {
+    if (inertial) return inertial->com;
     if (densities.empty()) return composite().centroid();
     validate();
     const MassProperties<double> mp = body_mass_properties<double>(parts, 0.0, 0.0, densities);
@@ -175,7 +180,8 @@ struct GraspObject {
 
   /// Throws topograsp::invalid_argument naming the object unless it has parts, a finite positive
   /// mass, valid shapes, and either no materials and densities or one of each per part with a
-  /// positive finite density ("<name>.densities[i]").
+  /// positive finite density ("<name>.densities[i]"), and an inertial, if any, of the object's
+  /// mass ("<name>.inertial.mass"; the scene checks the rest of it, HandScene).
   void validate() const {
     if (parts.empty()) detail::throw_invalid_argument(name, "an object needs at least one part");
     require_positive(mass, name + ".mass");
@@ -191,6 +197,10 @@ struct GraspObject {
                                          std::to_string(densities.size()));
     for (std::size_t i = 0; i < densities.size(); ++i)
       require_positive(densities[i], name + ".densities[" + std::to_string(i) + "]");
+    if (inertial && !(std::abs(inertial->mass - mass) <= 1e-9 * mass))
+      detail::throw_invalid_argument(name + ".inertial.mass",
+                                     "expected the object's mass " + std::to_string(mass) +
+                                         " kg, got " + std::to_string(inertial->mass));
   }
 };
 

@@ -5,11 +5,13 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 
 #include <topograsp/core/pose.hpp>
 #include <topograsp/model/spec.hpp>
 #include <topograsp/physics/detail/math.hpp>
+#include <topograsp/physics/mass_properties.hpp>
 
 namespace topograsp {
 
@@ -35,6 +37,12 @@ struct BodyDesc {
   /// steel head and wooden handle); empty = every shape has `density`. With a given mass they
   /// set how the mass is shared between the shapes; with mass 0 they give it. Copied by add_body().
   std::span<const double> shape_density{};
+  /// The mass, centre of mass (body frame) and inertia about it of a dynamic body whose shapes
+  /// only approximate it (a mesh object's boxes: the mesh gives its mass properties); when set,
+  /// mass, density and shape_density are not used. Must be physical: a positive mass, a finite
+  /// centre of mass, a symmetric positive-definite inertia whose principal moments satisfy the
+  /// triangle inequality (A + B >= C).
+  std::optional<MassProperties<double>> inertial{};
   /// Coulomb friction coefficient; a pair of bodies uses sqrt(mu_a mu_b). Default 0.5.
   double friction = 0.5;
 };

@@ -12,7 +12,10 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Eigenvalues>
+
 #include <topograsp/core/assert.hpp>
+#include <topograsp/core/eigen.hpp>
 #include <topograsp/core/error.hpp>
 #include <topograsp/core/status.hpp>
 #include <topograsp/physics/actuator.hpp>
@@ -143,7 +146,10 @@ class World {
   /// coordinate (of the body or of a shape) above max_length(), friction above 1e6, and for a
   /// dynamic body a mass or inertia (given, or derived from the density) that is not a normal
   /// positive number of S with a finite inverse, or whose kinetic energy at
-  /// StepperOptions::max_speed would overflow (mass * max_speed^2, inertia * max_speed^2).
+  /// StepperOptions::max_speed would overflow (mass * max_speed^2, inertia * max_speed^2); and
+  /// for a given BodyDesc::inertial that is not physical ("desc.inertial.mass", ".com",
+  /// ".inertia": a non-positive mass, a non-finite centre, an inertia not symmetric, not positive
+  /// definite or breaking the triangle inequality).
   int add_body(const BodyDesc& desc) {
     if (desc.shapes.empty())
       detail::throw_invalid_argument("desc.shapes", "expected at least one shape");
@@ -175,15 +181,21 @@ class World {
         require_positive(desc.shape_density[i], "desc.shape_density[" + std::to_string(i) + "]");
     }
     if (desc.type == BodyType::dynamic) {
+      if (desc.inertial) require_physical_inertial(*desc.inertial, "desc.inertial");
       const MassProperties<S> mp =
-          body_mass_properties<S>(desc.shapes, desc.mass, desc.density, desc.shape_density);
+          desc.inertial
+              ? MassProperties<S>{static_cast<S>(desc.inertial->mass),
+                                  desc.inertial->com.template cast<S>(),
+                                  desc.inertial->inertia.template cast<S>()}
+              : body_mass_properties<S>(desc.shapes, desc.mass, desc.density, desc.shape_density);
       b.mass = mp.mass;
       b.inv_mass = S(1) / mp.mass;
       b.local_com = mp.com;
       b.inertia = mp.inertia;
       b.inv_inertia_local = inverse_in_range(mp.inertia);
       b.inv_inertia = b.R * b.inv_inertia_local * b.R.transpose();
-      require_representable_mass(b, desc.mass > 0.0              ? "desc.mass"
+      require_representable_mass(b, desc.inertial                ? "desc.inertial"
+                                    : desc.mass > 0.0            ? "desc.mass"
                                     : desc.shape_density.empty() ? "desc.density"
                                                                  : "desc.shape_density");
     }
@@ -703,6 +715,20 @@ class World {
                                            number(max_length()) + "] m, got " + number(v));
     }
     require_coordinates(s.pose.p, argument + ".pose");
+  }
+  // A given inertial must be one a rigid body can have (as MuJoCo's mj_setConst checks).
+  static void require_physical_inertial(const MassProperties<double>& m, const std::string& arg) {
+    require_positive(m.mass, arg + ".mass");
+    if (!m.com.allFinite()) detail::throw_invalid_argument(arg + ".com", "expected finite numbers");
+    const Mat3& I = m.inertia;
+    if (!I.allFinite() || !I.isApprox(I.transpose(), 1e-9))
+      detail::throw_invalid_argument(arg + ".inertia", "expected a finite symmetric matrix");
+    const Vec3 e = Eigen::SelfAdjointEigenSolver<Mat3>(I).eigenvalues();
+    if (!(e[0] > 0.0) || e[0] + e[1] < e[2] * (1.0 - 1e-9))
+      detail::throw_invalid_argument(arg + ".inertia",
+                                     "expected positive principal moments with A + B >= C, got " +
+                                         number(e[0]) + ", " + number(e[1]) + ", " + number(e[2]) +
+                                         " kg m^2");
   }
   void require_representable_mass(const RigidBody<S>& b, std::string_view argument) const {
     const S smin = std::numeric_limits<S>::min(), smax = std::numeric_limits<S>::max();
