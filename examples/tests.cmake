@@ -7,6 +7,14 @@ add_test(NAME "example: wrap" COMMAND wrap --out ${CMAKE_CURRENT_BINARY_DIR}/wra
 add_test(NAME "example: grasp_transfer (small run)"
          COMMAND grasp_transfer --max-hypotheses 4 --jobs 2 --quiet --figures
                  --out ${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_small)
+# The shipped recorded grasps (data/demonstrations) as the demonstrations, two methods.
+add_test(NAME "example: grasp_transfer --demonstrations"
+         COMMAND grasp_transfer --demonstrations ${PROJECT_SOURCE_DIR}/data/demonstrations
+                 --methods topological,transplant --jobs 2 --quiet
+                 --out ${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_demonstrations)
+add_test(NAME "example: record_demonstrations"
+         COMMAND record_demonstrations --object can --count 1 --noise 1
+                 --out ${CMAKE_CURRENT_BINARY_DIR}/recorded)
 add_test(NAME "example: render_grasp" COMMAND render_grasp --out ${CMAKE_CURRENT_BINARY_DIR}/render-out)
 # Bad input: a clear message on stderr naming the option, and exit status 2 (nothing computed).
 # Each case is "name|arguments separated by spaces|regex that stderr must match".
@@ -46,7 +54,11 @@ expect_rejected(grasp_transfer "unknown object|--objects anvil|--objects: unknow
                       "resume with figures|--resume --figures|--figures: draws the grasps of this run only"
                       "merge without shards|merge --out x|merge: expected the shards' output folders"
                       "merge with a run option|merge --jobs 2 x|--jobs: not an option of merge"
-                      "merge of a folder without a run|merge --out ${bad}-m /proc|merge: \"/proc\" holds no results.json of grasp_transfer")
+                      "merge of a folder without a run|merge --out ${bad}-m /proc|merge: \"/proc\" holds no results.json of grasp_transfer"
+                      "missing demonstrations|--demonstrations ${bad}-none.json|--demonstrations: [^:]*-none.json: file: no such file"
+                      "demonstrations and objects|--demonstrations ${PROJECT_SOURCE_DIR}/data/demonstrations --objects hammer|--objects: not with --demonstrations"
+                      "a folder without recordings|--demonstrations ${PROJECT_SOURCE_DIR}/docs/figures|--demonstrations: .* holds no keypoint files"
+                      "a malformed recording|--demonstrations ${PROJECT_SOURCE_DIR}/tests/io/data/bad_keypoints.json|--demonstrations: [^:]*bad_keypoints.json: keypoints\\[3\\]: expected three numbers")
 # Output folders that are refused before any work (exit 2), each prepared by the test.
 add_test(NAME "example: grasp_transfer rejects results.json that is a folder"
          COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:grasp_transfer>;--quiet;--out;${bad}-a"

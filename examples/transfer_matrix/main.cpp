@@ -87,7 +87,7 @@ Options parse(std::span<char*> args) {
     const std::string_view v = args[++i];
     if (a == "--objects") {
       o.objects.clear();
-      for (const std::string_view n : detail::split_cli_list(v, a, objects::names(), "object"))
+      for (const std::string_view n : detail::split_cli_list(v, a, objects::all_names(), "object"))
         o.objects.emplace_back(n);
     } else if (a == "--methods") {
       std::vector<std::string> known;
@@ -185,7 +185,7 @@ Json interval_json(int k, int n) {
 
 int run(const Options& o) {
   std::vector<GraspObject> objs;
-  for (const std::string& n : o.objects) objs.push_back(*objects::find(n));
+  for (const std::string& n : o.objects) objs.push_back(*objects::find_any(n));
   std::vector<std::pair<std::size_t, int>> tasks;
   std::vector<std::vector<GraspHypothesis>> hyps;
   for (std::size_t oi = 0; oi < objs.size(); ++oi) {

@@ -4,8 +4,11 @@
 /// witness points, a model's link shapes at a configuration.
 #pragma once
 
+#include <topograsp/geometry/box_decomposition.hpp>
 #include <topograsp/geometry/composite.hpp>
 #include <topograsp/geometry/contact.hpp>
+#include <topograsp/geometry/mesh.hpp>
+#include <topograsp/geometry/mesh_simplify.hpp>
 #include <topograsp/geometry/model_shapes.hpp>
 #include <topograsp/geometry/primitive.hpp>
 #include <topograsp/geometry/signed_distance.hpp>

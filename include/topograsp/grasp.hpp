@@ -4,10 +4,15 @@
 /// experiment of the paper.
 #pragma once
 
+#include <topograsp/grasp/any_hand.hpp>
 #include <topograsp/grasp/experiment.hpp>
 #include <topograsp/grasp/hand_axes.hpp>
+#include <topograsp/grasp/hand_grasp.hpp>
 #include <topograsp/grasp/human_grasps.hpp>
 #include <topograsp/grasp/hypothesis.hpp>
+#include <topograsp/grasp/keypoint_fit.hpp>
+#include <topograsp/grasp/keypoints.hpp>
+#include <topograsp/grasp/mesh_object.hpp>
 #include <topograsp/grasp/object.hpp>
 #include <topograsp/grasp/placement.hpp>
 #include <topograsp/grasp/transfer.hpp>

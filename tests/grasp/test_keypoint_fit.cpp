@@ -3,9 +3,12 @@
 // to the model, and what the fit does with bad input.
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
+#include <topograsp/grasp/hypothesis.hpp>
 #include <topograsp/grasp/keypoint_fit.hpp>
 
 using namespace topograsp;
@@ -45,4 +48,39 @@ TEST_CASE("fit_human_hand refuses keypoints that are not finite", "[grasp][keypo
   k.keypoints[3].y() = std::numeric_limits<double>::quiet_NaN();
   CHECK_THROWS_WITH(fit_human_hand(k), Catch::StartsWith("keypoints: "));
   CHECK_THROWS_WITH(fit_human_hand(KeypointGrasp{}, -1), Catch::StartsWith("iterations: "));
+}
+
+TEST_CASE("a recorded grasp is a demonstration: the keypoints of a planned one give it back",
+          "[grasp][keypoints][demonstration]") {
+  // The bottle's first stable planned demonstration, recorded as its 21 keypoints, fitted,
+  // opened, placed and closed again: reached, judged, its windings those of the planned one.
+  const GraspObject bottle = objects::bottle();
+  const std::vector<GraspHypothesis> hyps = box_hypotheses(bottle);
+  std::optional<HumanGrasp> planned;
+  for (int i = 0; i < static_cast<int>(hyps.size()) && !planned; ++i) {
+    HumanGrasp g = demonstrate(bottle, hyps[static_cast<std::size_t>(i)], i);
+    if (g.stable()) planned = std::move(g);
+  }
+  REQUIRE(planned.has_value());
+  const KeypointGrasp recorded = human_keypoints(source_grasp(*planned), "bottle");
+  KeypointFit fit;
+  const HumanGrasp g = demonstrate_recorded(bottle, recorded, 7, {}, &fit);
+  CHECK(fit.max_error < 1e-3);
+  CHECK(g.id == 7);
+  CHECK(g.hypothesis.box == -1);
+  REQUIRE(g.reached);
+  INFO("planned " << planned->windings.transpose() << ", recorded " << g.windings.transpose());
+  CHECK((g.windings - planned->windings).cwiseAbs().maxCoeff() < 0.15);
+  CHECK(g.stable());
+  // The palm ends where the recording put it, within the opening and the approach (a few cm).
+  CHECK((g.hand_pose.translation() - planned->hand_pose.translation()).norm() < 0.03);
+}
+
+TEST_CASE("demonstrate_recorded refuses a recording of another object",
+          "[grasp][keypoints][bad-input]") {
+  HandGrasp<models::human_hand> pose;
+  pose.root.translation() = Vec3(-0.1, 0.0, 0.1);
+  const KeypointGrasp k = human_keypoints(pose, "hammer");
+  CHECK_THROWS_WITH(demonstrate_recorded(objects::bottle(), k, 0),
+                    Catch::StartsWith("recorded.object: ") && Catch::Contains("\"hammer\""));
 }

@@ -50,6 +50,31 @@ TEST_CASE("a keypoint grasp is read in metres or millimetres, object or world fr
                "[0.7071067811865476, 0, 0, 0.7071067811865476]}");
   const KeypointGrasp w = parse_keypoint_grasp(world);
   CHECK((w.keypoints[0] - Vec3(-0.08, 0.0, 0.015)).norm() < 1e-9);
+  // A quaternion of huge components is the same rotation (not the identity: its norm overflowed).
+  const std::string huge =
+      document(2.0,
+               ", \"frame\": \"world\", \"object_pose\": {\"position\": [0, 0, 0], \"quaternion\": "
+               "[1e200, 0, 0, 1e200]}");
+  CHECK((parse_keypoint_grasp(huge).keypoints[0] - w.keypoints[0]).norm() < 1e-9);
+  // A signed zero keeps its sign through the writer (found by fuzz_keypoint_grasp).
+  KeypointGrasp z = g;
+  z.keypoints[2] = Vec3(-0.0, 0.0, -0.0);
+  const KeypointGrasp zb = parse_keypoint_grasp(keypoint_grasp_json(z));
+  CHECK(std::signbit(zb.keypoints[2].x()));
+  CHECK_FALSE(std::signbit(zb.keypoints[2].y()));
+}
+
+TEST_CASE("a keypoint grasp written as JSON reads back to the last bit, with its source",
+          "[io][keypoints]") {
+  KeypointGrasp g = parse_keypoint_grasp(document(1.3));
+  g.keypoints[4] = Vec3(0.1, -1.0 / 3.0, 2e-7);
+  const std::string text = keypoint_grasp_json(g, "made by hand, for a test");
+  CHECK(text.find("\"source\": \"made by hand, for a test\"") != std::string::npos);
+  const KeypointGrasp back = parse_keypoint_grasp(text);
+  CHECK(back.object == g.object);
+  for (int i = 0; i < keypoint_count; ++i)
+    CHECK(back.keypoints[static_cast<std::size_t>(i)] == g.keypoints[static_cast<std::size_t>(i)]);
+  CHECK(keypoint_grasp_json(g).find("source") == std::string::npos);
 }
 
 TEST_CASE("keypoint windings grow as the curves wrap the point", "[io][keypoints]") {
@@ -83,6 +108,14 @@ TEST_CASE("a malformed keypoint grasp is refused, naming the file and the field"
   std::string bad = document(1.0);
   bad.replace(bad.find("[0.000000, -0.080000"), 1, "[\"x\", ");
   refused(bad, "g.json: keypoints[0]: expected three");
+  // A world pose that moves a keypoint out of the range of double (found by fuzz_keypoint_grasp).
+  std::string far =
+      document(1.0,
+               ", \"frame\": \"world\", \"object_pose\": {\"position\": [-1e308, 0, 0], "
+               "\"quaternion\": [1, 0, 0, 0]}");
+  far.replace(far.find("[0.000000, -0.080000"), 1, "[1e308, ");
+  far.replace(far.find("1e308, 0.000000"), 15, "1e308");
+  refused(far, "g.json: keypoints[0]: not finite in the object frame");
   CHECK_THROWS_WITH(read_keypoint_grasp("/nonexistent/g.json"),
                     "/nonexistent/g.json: file: no such file (a regular file is expected)");
 }

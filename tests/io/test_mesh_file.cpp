@@ -145,4 +145,18 @@ TEST_CASE("malformed mesh files are refused with the file, the line and the prob
   // An open mesh reads (the reader reads what is written) and mesh_problems says what is wrong.
   const TriangleMesh open = parse_mesh("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", MeshFormat::obj);
   CHECK_FALSE(mesh_problems(open).empty());
+  // A vertex that is not finite is never welded to another (NaN compares equal to everything in
+  // the weld's ordering): it stays, and mesh_problems names it (found by fuzz_mesh_file).
+  const TriangleMesh nan = parse_mesh(
+      "v 1 0 0\nv nan 0 0\nv 0 1 0\nv 0 0 1\nv 1 1 1\nf 2 4 3\nf 1 3 5\nf 1 5 4\nf 3 4 5\n",
+      MeshFormat::obj);
+  CHECK(nan.vertices.size() == 5);
+  CHECK(mesh_problems(nan).front().find("vertex 1 is not finite") != std::string::npos);
+  // Coordinates whose volume or moments overflow are a problem, not an infinite solid.
+  const TriangleMesh huge = parse_mesh(
+      "v 0 0 0\nv 1e62 0 0\nv 0 1e62 0\nv 0 0 1e62\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n",
+      MeshFormat::obj);
+  CHECK(mesh_problems(huge) ==
+        std::vector<std::string>{
+            "the enclosed volume or its moments overflow: coordinates too large to integrate"});
 }

@@ -2,11 +2,10 @@
 /// \file
 /// The box decomposition of a point set (BADGr: Huebner, Ruthotto and Kragic 2008): the point
 /// set's minimum-volume bounding box, split in two along the plane across one of its axes whose
-/// halves' boxes (in the box's axes) have the least summed volume, recursively, while a split is
-/// worth it (the halves' minimum-volume boxes fill at most `gain` of their parent's volume) and
-/// each half keeps enough points. Choosing the plane by the halves' boxes in the parent's axes,
-/// not by their minimum-volume boxes as Huebner et al. do, makes a choice one sweep over the
-/// sorted points per axis; the decision to split is still taken on minimum-volume boxes.
+/// halves' minimum-volume boxes have the least summed volume, recursively, while a split is worth
+/// it (the halves' boxes fill at most `gain` of their parent's volume) and each half keeps enough
+/// points. Candidate planes are scored on a sample of each half's points (the boxes of a dense
+/// surface sample are fixed by few of them); the chosen split is checked on all of them.
 #pragma once
 
 #include <algorithm>
@@ -49,17 +48,20 @@ struct BoxDecompositionOptions {
   /// by half of it on each side. Without it a split of sampled points always gains the gap of one
   /// spacing between the halves, and a box of a fine grid is split again and again.
   double resolution = 0.005;
+  /// Points per half on which a candidate plane's boxes are found (every k-th point of a larger
+  /// half); the chosen split's boxes use every point.
+  int sample = 400;
 };
 
 /// Throws topograsp::invalid_argument naming \p argument unless \p options has a gain in (0, 1],
 /// min_points >= 1, planes >= 1, max_depth >= 0 and a finite resolution >= 0.
 inline void require_valid(const BoxDecompositionOptions& options, std::string_view argument) {
   if (!(options.gain > 0.0 && options.gain <= 1.0) || options.min_points < 1 ||
-      options.planes < 1 || options.max_depth < 0 ||
+      options.planes < 1 || options.max_depth < 0 || options.sample < 1 ||
       !(options.resolution >= 0.0 && std::isfinite(options.resolution)))
     detail::throw_invalid_argument(argument,
                                    "expected gain in (0, 1], min_points >= 1, planes >= 1, "
-                                   "max_depth >= 0 and a finite resolution >= 0");
+                                   "max_depth >= 0, sample >= 1 and a finite resolution >= 0");
 }
 
 namespace detail {
@@ -145,57 +147,44 @@ inline OrientedBox box_with_axes(std::span<const Vec3> points, const Mat3& R) {
       return b;
     };
     const OrientedBox box = grown(minimum_volume_box(w.points));
-    // The plane: of the planes across each axis of the box, the one whose halves' boxes in the
-    // parent's axes have the least summed volume (every plane of an axis in one sweep over the
-    // points sorted along it: prefix and suffix bounds). Then the halves' own minimum-volume
-    // boxes decide whether the split is worth it.
+    // The plane: of the planes across each axis of the box, the one whose halves' minimum-volume
+    // boxes have the least summed volume, the boxes found on at most `sample` of each half's
+    // points (every k-th, in order): a box's volume is decided by its outermost points, which a
+    // dense surface sample repeats many times over. The chosen halves' boxes are then taken on
+    // all their points to decide whether the split is worth it.
     const std::size_t n = w.points.size();
-    std::vector<Vec3> local(n);
-    for (std::size_t i = 0; i < n; ++i) local[i] = box.R.transpose() * (w.points[i] - box.centre);
+    const std::size_t stride = (n + options.sample - 1) / options.sample;
     double best = std::numeric_limits<double>::infinity();
     int best_axis = -1;
     double best_cut = 0.0;
-    std::vector<std::size_t> order(n);
-    std::vector<Vec3> lo_prefix(n), hi_prefix(n), lo_suffix(n), hi_suffix(n);
-    const auto volume = [&](const Vec3& lo, const Vec3& hi) {
-      return (hi - lo + Vec3::Constant(options.resolution)).prod();
-    };
+    std::vector<Vec3> below, above;
     if (w.depth < options.max_depth && n >= 2 * static_cast<std::size_t>(options.min_points))
-      for (int axis = 0; axis < 3; ++axis) {
-        for (std::size_t i = 0; i < n; ++i) order[i] = i;
-        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-          return local[a][axis] < local[b][axis];
-        });
-        for (std::size_t i = 0; i < n; ++i) {
-          const Vec3& p = local[order[i]];
-          lo_prefix[i] = i == 0 ? p : lo_prefix[i - 1].cwiseMin(p);
-          hi_prefix[i] = i == 0 ? p : hi_prefix[i - 1].cwiseMax(p);
-        }
-        for (std::size_t i = n; i-- > 0;) {
-          const Vec3& p = local[order[i]];
-          lo_suffix[i] = i + 1 == n ? p : lo_suffix[i + 1].cwiseMin(p);
-          hi_suffix[i] = i + 1 == n ? p : hi_suffix[i + 1].cwiseMax(p);
-        }
-        std::size_t below = 0;  // points with a coordinate below the cut
+      for (int axis = 0; axis < 3; ++axis)
         for (int k = 1; k < options.planes; ++k) {
           const double cut = -box.half[axis] + 2.0 * box.half[axis] * k / options.planes;
-          while (below < n && local[order[below]][axis] < cut) ++below;
-          if (below < static_cast<std::size_t>(options.min_points) ||
-              n - below < static_cast<std::size_t>(options.min_points))
+          std::size_t n_below = 0;
+          below.clear();
+          above.clear();
+          for (std::size_t i = 0; i < n; ++i) {
+            const bool is_below = box.R.col(axis).dot(w.points[i] - box.centre) < cut;
+            const std::size_t rank = is_below ? n_below++ : i - n_below;
+            if (rank % stride == 0) (is_below ? below : above).push_back(w.points[i]);
+          }
+          if (n_below < static_cast<std::size_t>(options.min_points) ||
+              n - n_below < static_cast<std::size_t>(options.min_points))
             continue;
-          const double v = volume(lo_prefix[below - 1], hi_prefix[below - 1]) +
-                           volume(lo_suffix[below], hi_suffix[below]);
+          const double v =
+              grown(minimum_volume_box(below)).volume() + grown(minimum_volume_box(above)).volume();
           if (v < best) {
             best = v;
             best_axis = axis;
             best_cut = cut;
           }
         }
-      }
     std::vector<Vec3> lower, upper;
     if (best_axis >= 0) {
-      for (std::size_t i = 0; i < n; ++i)
-        (local[i][best_axis] < best_cut ? lower : upper).push_back(w.points[i]);
+      for (const Vec3& p : w.points)
+        (box.R.col(best_axis).dot(p - box.centre) < best_cut ? lower : upper).push_back(p);
       const double split =
           grown(minimum_volume_box(lower)).volume() + grown(minimum_volume_box(upper)).volume();
       if (!(split <= options.gain * box.volume())) lower.clear();

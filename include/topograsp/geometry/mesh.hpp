@@ -29,6 +29,40 @@ struct TriangleMesh {
   std::vector<std::array<int, 3>> triangles;
 };
 
+namespace detail {
+
+// The volume of the solid a closed mesh bounds and its first and second moments (integrals of x
+// and x x^T over it), by the signed tetrahedra from the origin to each triangle.
+struct MeshMoments {
+  double volume = 0.0;
+  Vec3 first = Vec3::Zero();
+  Mat3 second = Mat3::Zero();
+};
+inline MeshMoments mesh_moments(const TriangleMesh& mesh) {
+  MeshMoments m;
+  for (const auto& t : mesh.triangles) {
+    const Vec3 &a = mesh.vertices[static_cast<std::size_t>(t[0])],
+               &b = mesh.vertices[static_cast<std::size_t>(t[1])],
+               &c = mesh.vertices[static_cast<std::size_t>(t[2])];
+    const double v = a.dot(b.cross(c)) / 6.0;  // the signed tetrahedron (0, a, b, c)
+    const Vec3 s = a + b + c;
+    m.volume += v;
+    m.first += v * s / 4.0;
+    m.second +=
+        v / 20.0 * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
+  }
+  return m;
+}
+
+// The inertia about the centre of mass of the solid of moments m at density rho.
+inline Mat3 mesh_inertia(const MeshMoments& m, double rho) {
+  const Vec3 com = m.first / m.volume;
+  const Mat3 origin = rho * (m.second.trace() * Mat3::Identity() - m.second);
+  return origin - rho * m.volume * (com.squaredNorm() * Mat3::Identity() - com * com.transpose());
+}
+
+}  // namespace detail
+
 /// What is wrong with a mesh that should bound a solid: empty if nothing. Each problem says what
 /// and where (vertex or triangle indices, from 0), the first few of each kind:
 /// - a vertex that is not finite, or a triangle whose index is out of range;
@@ -37,7 +71,8 @@ struct TriangleMesh {
 /// - an open edge (in one triangle only: the mesh has a hole) or a non-manifold edge (in more
 ///   than two);
 /// - two triangles that run along a shared edge the same way (inconsistent winding);
-/// - a negative enclosed volume (every triangle wound inward).
+/// - a negative enclosed volume (every triangle wound inward), or a volume or moments that
+///   overflow (coordinates too large).
 [[nodiscard]] inline std::vector<std::string> mesh_problems(const TriangleMesh& mesh) {
   constexpr std::size_t shown = 3;  // problems of each kind that are spelled out
   std::vector<std::string> out;
@@ -101,12 +136,12 @@ struct TriangleMesh {
       out.push_back("... and " + std::to_string(k - shown) + " more of the kind above (" + kind +
                     ")");
   if (out.empty()) {
-    double volume = 0.0;
-    for (const auto& t : mesh.triangles)
-      volume += mesh.vertices[static_cast<std::size_t>(t[0])].dot(
-          mesh.vertices[static_cast<std::size_t>(t[1])].cross(
-              mesh.vertices[static_cast<std::size_t>(t[2])]));
-    if (!(volume > 0.0))
+    const detail::MeshMoments m = detail::mesh_moments(mesh);
+    if (!std::isfinite(m.volume) || !m.first.allFinite() || !m.second.allFinite() ||
+        !detail::mesh_inertia(m, 1.0).allFinite())
+      out.push_back(
+          "the enclosed volume or its moments overflow: coordinates too large to integrate");
+    else if (!(m.volume > 0.0))
       out.push_back("the enclosed volume is not positive: the triangles are wound inward");
   }
   return out;
@@ -131,26 +166,11 @@ inline void require_closed_mesh(const TriangleMesh& mesh, std::string_view argum
                                                            double density) {
   require_closed_mesh(mesh, "mesh");
   require_positive(density, "density");
-  double volume = 0.0;
-  Vec3 first = Vec3::Zero();   // integral of x dV
-  Mat3 second = Mat3::Zero();  // integral of x x^T dV
-  for (const auto& t : mesh.triangles) {
-    const Vec3 &a = mesh.vertices[static_cast<std::size_t>(t[0])],
-               &b = mesh.vertices[static_cast<std::size_t>(t[1])],
-               &c = mesh.vertices[static_cast<std::size_t>(t[2])];
-    const double v = a.dot(b.cross(c)) / 6.0;  // the signed tetrahedron (0, a, b, c)
-    const Vec3 s = a + b + c;
-    volume += v;
-    first += v * s / 4.0;
-    second +=
-        v / 20.0 * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
-  }
+  const detail::MeshMoments m = detail::mesh_moments(mesh);
   MassProperties<> p;
-  p.mass = density * volume;
-  p.com = first / volume;
-  const Mat3 origin = density * (second.trace() * Mat3::Identity() - second);
-  p.inertia =
-      origin - p.mass * (p.com.squaredNorm() * Mat3::Identity() - p.com * p.com.transpose());
+  p.mass = density * m.volume;
+  p.com = m.first / m.volume;
+  p.inertia = detail::mesh_inertia(m, density);
   return p;
 }
 

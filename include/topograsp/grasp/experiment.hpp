@@ -18,6 +18,7 @@
 #include <vector>
 
 #include <topograsp/core/random.hpp>
+#include <topograsp/grasp/keypoint_fit.hpp>
 #include <topograsp/grasp/transfer.hpp>
 
 namespace topograsp {
@@ -39,6 +40,12 @@ enum class Judge : std::uint8_t { builtin, mujoco, both };
   return "unknown";
 }
 
+/// A recorded human grasp and where it comes from (a file's path, for the records).
+struct RecordedGrasp {
+  std::string source;
+  KeypointGrasp grasp;
+};
+
 /// What to run.
 struct ExperimentOptions {
   std::vector<GraspObject> objects;     ///< default: the paper's hammer and bottle
@@ -58,6 +65,11 @@ struct ExperimentOptions {
   /// output folder has done (grasp_transfer --resume). They are left out of the results
   /// (ObjectResult::hypotheses does not count them); the caller has their records.
   std::vector<std::pair<std::string, int>> skip;
+  /// Recorded human grasps (grasp_transfer --demonstrations): when not empty they are the
+  /// demonstrations in place of the planned ones, each judged as demonstrate_recorded() says and
+  /// transferred if stable; an object's k-th recording (in this order) is its hypothesis k. Every
+  /// recording's object must be one of `objects`.
+  std::vector<RecordedGrasp> demonstrations;
 };
 
 /// The numbers of one method on one object.
@@ -224,6 +236,14 @@ inline void validate_experiment_options(const ExperimentOptions& options) {
                                                       std::string(to_string(options.methods[i])) +
                                                       "\" is given twice (each method once)");
   for (const GraspObject& o : options.objects) o.validate();
+  for (std::size_t i = 0; i < options.demonstrations.size(); ++i) {
+    const std::string& name = options.demonstrations[i].grasp.object;
+    if (std::none_of(options.objects.begin(), options.objects.end(),
+                     [&](const GraspObject& o) { return o.name == name; }))
+      detail::throw_invalid_argument("demonstrations[" + std::to_string(i) + "].object",
+                                     "\"" + name + "\" (" + options.demonstrations[i].source +
+                                         ") is not an object of the run");
+  }
   validate_transfer_parameters(options.transfer);
   require_non_negative(options.transfer.sim.friction, "transfer.sim.friction");
   const GraspSimOptions& sim = options.transfer.sim;
@@ -252,7 +272,8 @@ inline void validate_experiment_options(const ExperimentOptions& options) {
 
 /// Runs the experiment described by \p options. Throws topograsp::invalid_argument naming the
 /// field, before any work, for the options validate_experiment_options refuses. Each hypothesis
-/// (of every object, but those in options.skip) is one task: its demonstration, then, if stable,
+/// (of every object, but those in options.skip; or each recorded grasp of options.demonstrations)
+/// is one task: its demonstration, then, if stable,
 /// each method's transfer of it; \p on_done is called when it is done. Results are identical for
 /// equal options whatever the number of jobs, and a grasp's result does not depend on the other
 /// objects or the shard (grasp_seed). If fewer than \p options.jobs threads can be started, the
@@ -279,13 +300,18 @@ std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& o
   // Every task: (object index, hypothesis id), objects in order, ids ascending.
   const std::size_t no = options.objects.size(), nm = options.methods.size();
   std::vector<std::vector<GraspHypothesis>> hyps(no);
+  std::vector<std::vector<const RecordedGrasp*>> recorded(no);
   std::vector<std::pair<std::size_t, int>> tasks;
   std::vector<ObjectResult> results(no);
   std::vector<std::vector<std::size_t>> task_of(no);  // [object][k]: the task of its k-th id
   for (std::size_t oi = 0; oi < no; ++oi) {
     results[oi].object = options.objects[oi];
-    hyps[oi] = box_hypotheses(options.objects[oi]);
-    for (int i = 0; i < static_cast<int>(hyps[oi].size()); ++i) {
+    if (options.demonstrations.empty()) hyps[oi] = box_hypotheses(options.objects[oi]);
+    for (const RecordedGrasp& r : options.demonstrations)
+      if (r.grasp.object == options.objects[oi].name) recorded[oi].push_back(&r);
+    const int n =
+        static_cast<int>(options.demonstrations.empty() ? hyps[oi].size() : recorded[oi].size());
+    for (int i = 0; i < n; ++i) {
       if (i % options.shard_count != options.shard_index ||
           (options.max_hypotheses > 0 && i >= options.max_hypotheses))
         continue;
@@ -308,7 +334,10 @@ std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& o
         TransferOptions transfer_options = options.transfer;
         transfer_options.sim.stability.seed = grasp_seed(options.seed, object.name, id);
         HumanGrasp& g = human[static_cast<std::size_t>(k)];
-        g = demonstrate(object, hyps[oi][static_cast<std::size_t>(id)], id, transfer_options.sim);
+        const auto i = static_cast<std::size_t>(id);
+        g = recorded[oi].empty()
+                ? demonstrate(object, hyps[oi][i], id, transfer_options.sim)
+                : demonstrate_recorded(object, recorded[oi][i]->grasp, id, transfer_options.sim);
         std::vector<RobotGrasp>& t = transfers[static_cast<std::size_t>(k)];
         if (g.stable()) {
           for (const TransferMethod m : options.methods)

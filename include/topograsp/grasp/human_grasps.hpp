@@ -185,6 +185,49 @@ struct HumanClosing {
   CloseResult<20> closing;
 };
 
+namespace detail {
+
+// The human hand on its free base at `touched` (6 base coordinates, then the joints it closes
+// from) closed on `object` with the human hand's holding torques (options.human_hold_fraction).
+inline HumanClosing close_human_at(const GraspObject& object, const Vec<26>& touched,
+                                   const GraspSimOptions& options) {
+  constexpr auto& free = models::human_hand_free;
+  KinematicsData<free> d;
+  forward_kinematics(d, touched);
+  HandScene<models::human_hand> scene(
+      link_pose(d, free.link("palm")), touched.tail<20>(),
+      object_spec(object, HandSurface::human_skin, options.friction), options.scene);
+  CloseOptions close = options.close;
+  close.hold_fraction = options.human_hold_fraction;
+  const CloseResult<20> closing = close_hand(scene, close);
+  return HumanClosing{touched, std::move(scene), closing};
+}
+
+// The demonstration `closed` judged into g (reached, pose, joints, the judges' verdicts, the
+// windings of the closed hand around the object's centre of mass).
+inline void judge_human_closing(const GraspObject& object, const HumanClosing& closed,
+                                const GraspSimOptions& options, HumanGrasp& g) {
+  const HandScene<models::human_hand>& scene = closed.scene;
+  g.reached = true;
+  g.hand_pose = scene.hand_pose();
+  g.q = closed.closing.q_closed;
+  g.touching_joints = closed.closing.touching_joints;
+  g.object_pose = scene.object_pose();
+  GraspJudgement judged = judge_grasp(scene, object, options, options.second_judge_human);
+  g.stability = std::move(judged.stability);
+  g.second = std::move(judged.second);
+  g.quality = std::move(judged.quality);
+  Vec<26> qc = closed.touched;
+  qc.tail<20>() = g.q;
+  KinematicsData<models::human_hand_free> d;
+  forward_kinematics(d, qc);
+  const Vec3 com = object.centre_of_mass();
+  g.windings = WindingTask<models::human_hand_free>(com).value(d);
+  g.descriptor = winding_descriptor(d, com);
+}
+
+}  // namespace detail
+
 /// Places the human hand's palm for hypothesis \p h of \p object (open pre-shape, at the
 /// stand-off), approaches until contact and closes with the human hand's holding torques
 /// (options.human_hold_fraction): the grasp demonstrate() judges, for a caller that wants the
@@ -202,15 +245,7 @@ struct HumanClosing {
   const auto touched = approach_until_contact<free>(start, h.approach, shape, options.contact_gap,
                                                     2.0 * options.standoff);
   if (!touched) return std::nullopt;
-  KinematicsData<free> d;
-  forward_kinematics(d, *touched);
-  HandScene<models::human_hand> scene(
-      link_pose(d, free.link("palm")), pre,
-      object_spec(object, HandSurface::human_skin, options.friction), options.scene);
-  CloseOptions close = options.close;
-  close.hold_fraction = options.human_hold_fraction;
-  const CloseResult<20> closing = close_hand(scene, close);
-  return HumanClosing{*touched, std::move(scene), closing};
+  return detail::close_human_at(object, *touched, options);
 }
 
 /// Runs hypothesis \p h of \p object with the human hand: place the palm (open pre-shape) at the
@@ -223,25 +258,7 @@ struct HumanClosing {
   g.id = id;
   g.hypothesis = h;
   const std::optional<HumanClosing> closed = close_human_grasp(object, h, options);
-  if (!closed) return g;
-  const HandScene<models::human_hand>& scene = closed->scene;
-  g.reached = true;
-  g.hand_pose = scene.hand_pose();
-  g.q = closed->closing.q_closed;
-  g.touching_joints = closed->closing.touching_joints;
-  g.object_pose = scene.object_pose();
-  GraspJudgement judged = judge_grasp(scene, object, options, options.second_judge_human);
-  g.stability = std::move(judged.stability);
-  g.second = std::move(judged.second);
-  g.quality = std::move(judged.quality);
-  // The windings of the closed hand around the centre of mass.
-  Vec<26> qc = closed->touched;
-  qc.tail<20>() = g.q;
-  KinematicsData<models::human_hand_free> d;
-  forward_kinematics(d, qc);
-  const Vec3 com = object.centre_of_mass();
-  g.windings = WindingTask<models::human_hand_free>(com).value(d);
-  g.descriptor = winding_descriptor(d, com);
+  if (closed) detail::judge_human_closing(object, *closed, options, g);
   return g;
 }
 

@@ -13,7 +13,7 @@
 #include <Eigen/SVD>
 
 #include <topograsp/grasp/hand_grasp.hpp>
-#include <topograsp/io/keypoint_grasp.hpp>
+#include <topograsp/grasp/keypoints.hpp>
 #include <topograsp/kinematics/jacobian.hpp>
 
 namespace topograsp {
@@ -157,6 +157,57 @@ inline Eigen::Isometry3d rigid_fit(std::span<const Vec3> a, std::span<const Vec3
   KeypointGrasp g;
   g.object = std::move(object);
   for (std::size_t i = 0; i < points.size(); ++i) g.keypoints[i] = world_point(d, points[i]);
+  return g;
+}
+
+/// A recorded human grasp \p recorded of \p object as a demonstration (id \p id), judged as
+/// demonstrate() judges a planned one: the human hand fitted to its keypoints (fit_human_hand();
+/// the fit in \p fit if not null), its joints moved toward the planned demonstrations' open
+/// pre-shape (human_preshape) a tenth of the way at a time until the hand is clear of the object
+/// (keypoints are taken on a hand that touches it, and a fit may overlap it by millimetres), moved
+/// along its palm's approach to contact (place_hand_at_contact, at
+/// most options.standoff further), closed with the human hand's holding torques and judged by the
+/// stability suite (and the second judge). Its hypothesis is the fitted grasp frame (box and face
+/// -1: from no box). Not reached when the hand cannot be placed clear of the object.
+/// \throws topograsp::invalid_argument naming "recorded.object" when the recording names another
+///         object than \p object, and as fit_human_hand() for keypoints that are not finite.
+[[nodiscard]] inline HumanGrasp demonstrate_recorded(const GraspObject& object,
+                                                     const KeypointGrasp& recorded, int id,
+                                                     const GraspSimOptions& options = {},
+                                                     KeypointFit* fit = nullptr) {
+  constexpr auto& h = models::human_hand;
+  if (recorded.object != object.name)
+    detail::throw_invalid_argument("recorded.object", "the recording is of \"" + recorded.object +
+                                                          "\", not of \"" + object.name + "\"");
+  const KeypointFit fitted = fit_human_hand(recorded);
+  if (fit != nullptr) *fit = fitted;
+  HumanGrasp g;
+  g.id = id;
+  const Eigen::Isometry3d T = grasp_frame<h>(fitted.grasp);
+  g.hypothesis.box = g.hypothesis.face = -1;
+  g.hypothesis.centre = T.translation();
+  g.hypothesis.approach = T.linear().col(2);
+  g.hypothesis.up = T.linear().col(0);
+  // Opened toward the planned demonstrations' pre-shape, a tenth of the way at a time, until the
+  // hand is clear of the object (all the way when the palm touches it: then the approach below
+  // backs the hand off and brings it in again, as a planned demonstration comes in).
+  constexpr auto& free = models::human_hand_free;
+  const Composite shape = object.composite();
+  const Vec<h.nq> pre = human_preshape();
+  Vec<h.nq> opened = fitted.grasp.q;
+  KinematicsData<free> d;
+  for (int k = 1; k <= 10; ++k) {
+    forward_kinematics(d, free_configuration<h>(fitted.grasp.root, opened));
+    if (hand_object_distance(d, shape) >= options.contact_gap) break;
+    opened = fitted.grasp.q + 0.1 * k * (pre - fitted.grasp.q);
+  }
+  const Vec3 approach = fitted.grasp.root.linear() * grasp_approach<h>(opened);
+  const std::optional<Eigen::Isometry3d> placed = place_hand_at_contact<h>(
+      object, fitted.grasp.root, opened, approach, options, options.standoff);
+  if (!placed) return g;
+  detail::judge_human_closing(
+      object, detail::close_human_at(object, free_configuration<h>(*placed, opened), options),
+      options, g);
   return g;
 }
 

@@ -5,6 +5,7 @@
 /// topograsp::invalid_argument naming the option; command_line_usage is the --help text.
 #pragma once
 
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
 #include <cstdio>
@@ -17,6 +18,8 @@
 #include <vector>
 
 #include <topograsp/grasp/experiment.hpp>
+#include <topograsp/io/keypoint_grasp.hpp>
+#include <topograsp/io/ycb_objects.hpp>
 
 namespace topograsp {
 
@@ -45,6 +48,37 @@ inline constexpr int max_command_line_jobs = 1024;
 inline constexpr double max_command_line_friction = 10.0;
 
 namespace detail {
+
+// The recorded grasps of --demonstrations: one keypoint file, or every *.json file of a folder
+// (by name). Errors name the option, then the file and the field (keypoint_error).
+inline std::vector<RecordedGrasp> read_demonstrations(std::string_view value) {
+  namespace fs = std::filesystem;
+  const fs::path path{std::string(value)};
+  std::error_code ec;
+  std::vector<fs::path> files;
+  if (fs::is_directory(path, ec)) {
+    for (const fs::directory_entry& e : fs::directory_iterator(path, ec))
+      if (e.is_regular_file(ec) && e.path().extension() == ".json") files.push_back(e.path());
+    if (ec)
+      throw_invalid_argument("--demonstrations",
+                             "cannot list \"" + path.string() + "\": " + ec.message());
+    std::sort(files.begin(), files.end());
+    if (files.empty())
+      throw_invalid_argument("--demonstrations",
+                             "\"" + path.string() + "\" holds no keypoint files (*.json)");
+  } else {
+    files.push_back(path);
+  }
+  std::vector<RecordedGrasp> out;
+  for (const fs::path& f : files) {
+    try {
+      out.push_back({f.string(), read_keypoint_grasp(f.string())});
+    } catch (const invalid_argument& e) {
+      throw_invalid_argument("--demonstrations", e.what());
+    }
+  }
+  return out;
+}
 
 // s in double quotes for a message: bytes outside printable ASCII as \xNN, at most 80 bytes shown.
 inline std::string quote_argument(std::string_view s) {
@@ -173,6 +207,7 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
     return cli;
   }
   std::string_view objects_list = "hammer,bottle";
+  std::string demonstration_objects;  // the recordings' objects, with --demonstrations
   std::string_view methods_list = "topological,transplant,fingertip,virtual_finger";
   std::vector<std::string_view> seen;  // value options given so far
   std::vector<std::string_view> set_names;
@@ -199,9 +234,10 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
       continue;
     }
     constexpr std::string_view value_options[] = {
-        "--objects", "--methods",        "--out",           "--jobs",
-        "--seed",    "--max-hypotheses", "--shard",         "--winding-reference",
-        "--set",     "--friction",       "--hold-fraction", "--judge"};
+        "--objects",       "--methods",        "--out",           "--jobs",
+        "--seed",          "--max-hypotheses", "--shard",         "--winding-reference",
+        "--set",           "--friction",       "--hold-fraction", "--judge",
+        "--demonstrations"};
     bool known = false;
     for (const std::string_view o : value_options) known = known || o == arg;
     if (!known)
@@ -221,6 +257,8 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
     }
     if (arg == "--objects") {
       objects_list = value;
+    } else if (arg == "--demonstrations") {
+      cli.experiment.demonstrations = detail::read_demonstrations(value);
     } else if (arg == "--methods") {
       methods_list = value;
     } else if (arg == "--out") {
@@ -303,9 +341,32 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
       set(detail::parse_cli_number<double>(value.substr(eq + 1), "--set " + std::string(name)));
     }
   }
+  if (!cli.experiment.demonstrations.empty()) {
+    // The recordings' objects, in the order they first come.
+    if (std::find(seen.begin(), seen.end(), "--objects") != seen.end())
+      detail::throw_invalid_argument("--objects",
+                                     "not with --demonstrations: the recordings name the objects");
+    std::string names;
+    for (const RecordedGrasp& r : cli.experiment.demonstrations) {
+      const std::vector<std::string> known = objects::all_names();
+      if (std::find(known.begin(), known.end(), r.grasp.object) == known.end())
+        detail::throw_invalid_argument("--demonstrations",
+                                       r.source + ": object: unknown object \"" + r.grasp.object +
+                                           "\" (docs/objects.md lists them)");
+      if (("," + names + ",").find("," + r.grasp.object + ",") == std::string::npos)
+        names += (names.empty() ? "" : ",") + r.grasp.object;
+    }
+    demonstration_objects = names;
+    objects_list = demonstration_objects;
+  }
   for (const std::string_view name :
-       detail::split_cli_list(objects_list, "--objects", objects::names(), "object")) {
-    std::optional<GraspObject> o = objects::find(name);
+       detail::split_cli_list(objects_list, "--objects", objects::all_names(), "object")) {
+    std::optional<GraspObject> o;
+    try {
+      o = objects::find_any(name);
+    } catch (const invalid_argument& e) {  // a YCB mesh that cannot be read: say which option
+      detail::throw_invalid_argument("--objects", e.what());
+    }
     if (!o)
       detail::throw_invalid_argument("--objects", "no object " + detail::quote_argument(name));
     cli.experiment.objects.push_back(std::move(*o));
@@ -328,8 +389,13 @@ Transfers stable human grasps to the Schunk SDH (on a 7-DOF arm) and tests every
 simulation, as in "Topological Synergies for Grasp Transfer" (Table I).
 
 options:
+  --demonstrations FILE_OR_DIR  recorded human grasps (21 hand keypoints each, the JSON format
+                   of docs/transfer.md; a folder: its *.json files by name) as the
+                   demonstrations, in place of the planned ones; their objects are the run's
   --objects LIST   comma-separated objects, each once (default hammer,bottle; also mug, box,
-                   ball, can)
+                   ball, can, and the YCB objects ycb_cracker_box, ycb_sugar_box,
+                   ycb_tomato_soup_can, ycb_mustard_bottle, ycb_banana, ycb_bleach_cleanser,
+                   ycb_mug, ycb_power_drill, ycb_hammer: docs/objects.md)
   --methods LIST   comma-separated methods, each once (default topological,transplant,fingertip,
                    virtual_finger; also the topological method's variants paper, paper_line,
                    paper_approach, no_windings, nearest_point, closed_windings: docs/transfer.md)

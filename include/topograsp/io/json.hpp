@@ -170,6 +170,8 @@ class Json {
         const double d = std::get<double>(v_);
         if (!std::isfinite(d)) {
           out += "null";
+        } else if (d == 0.0 && std::signbit(d)) {
+          out += "-0";  // the sign of a zero reads back
         } else if (d == std::floor(d) && std::abs(d) < 1e15) {
           out += std::to_string(static_cast<long long>(d));
         } else {

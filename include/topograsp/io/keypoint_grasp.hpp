@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
 /// Recorded human grasps as 21 hand keypoints (the order of MANO-based datasets: DexYCB, HO-3D,
-/// OakInk, GRAB): the JSON format, its reader with errors that name the file and the field, and
-/// the winding descriptor straight from the keypoints (the hand curves run through them).
+/// OakInk, GRAB; KeypointGrasp, grasp/keypoints.hpp) in a file: the JSON format, its reader with
+/// errors that name the file and the field, and its writer.
 ///
 /// The format ("topograsp keypoint grasp 1"):
 ///
@@ -12,13 +12,15 @@
 ///       "units": "m",                      // or "mm"
 ///       "frame": "object",                 // or "world": then object_pose is required
 ///       "object_pose": {"position": [x, y, z], "quaternion": [w, x, y, z]},
-///       "keypoints": [[x, y, z], ... 21 of them]
+///       "keypoints": [[x, y, z], ... 21 of them],
+///       "source": "how the recording was made"   // optional, free text
 ///     }
 ///
 /// Keypoint order: 0 wrist; 1-4 thumb CMC, MCP, IP, tip; 5-8 index MCP, PIP, DIP, tip; 9-12
 /// middle; 13-16 ring; 17-20 little.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -30,19 +32,10 @@
 
 #include <topograsp/core/eigen.hpp>
 #include <topograsp/core/error.hpp>
+#include <topograsp/grasp/keypoints.hpp>
 #include <topograsp/io/json.hpp>
-#include <topograsp/task/winding.hpp>
 
 namespace topograsp {
-
-/// The number of hand keypoints of a recorded grasp.
-inline constexpr int keypoint_count = 21;
-
-/// A recorded human grasp: its object's name and the 21 keypoints in the object frame (m).
-struct KeypointGrasp {
-  std::string object;
-  std::array<Vec3, keypoint_count> keypoints{};
-};
 
 /// The error of parse_keypoint_grasp() and read_keypoint_grasp(): "FILE: FIELD: problem".
 class keypoint_error : public invalid_argument {
@@ -77,7 +70,7 @@ inline const Json& json_field(const Json& doc, std::string_view key, const std::
 /// \throws topograsp::keypoint_error naming the field for a malformed document (not JSON, a wrong
 ///         format tag, units other than m or mm, a frame other than object or world, a world frame
 ///         without object_pose, a quaternion of zero length, not 21 keypoints of three finite
-///         numbers each).
+///         numbers each, a keypoint that leaves the range of double in the object frame).
 [[nodiscard]] inline KeypointGrasp parse_keypoint_grasp(std::string_view text,
                                                         const std::string& file = "<keypoints>") {
   Json doc;
@@ -125,8 +118,13 @@ inline const Json& json_field(const Json& doc, std::string_view key, const std::
         throw keypoint_error(file, "object_pose.quaternion", "expected four finite numbers");
       c[k] = x.as_number();
     }
+    // Scaled by its largest component first, so that huge components do not overflow the norm.
+    const double largest =
+        std::max({std::abs(c[0]), std::abs(c[1]), std::abs(c[2]), std::abs(c[3])});
+    if (largest > 0.0)
+      for (double& x : c) x /= largest;
     Eigen::Quaterniond quat(c[0], c[1], c[2], c[3]);
-    if (!(quat.norm() > 1e-9))
+    if (!(largest > 0.0) || !(quat.norm() * largest > 1e-9))
       throw keypoint_error(file, "object_pose.quaternion", "has zero length");
     T_world_object.linear() = quat.normalized().toRotationMatrix();
     T_world_object.translation() = position;
@@ -136,10 +134,14 @@ inline const Json& json_field(const Json& doc, std::string_view key, const std::
     throw keypoint_error(file, "keypoints",
                          "expected " + std::to_string(keypoint_count) + " keypoints");
   const Eigen::Isometry3d T_object_world = T_world_object.inverse();
-  for (int i = 0; i < keypoint_count; ++i)
-    g.keypoints[static_cast<std::size_t>(i)] =
-        T_object_world * (unit * detail::json_vec3(kps.as_array()[static_cast<std::size_t>(i)],
-                                                   file, "keypoints[" + std::to_string(i) + "]"));
+  for (int i = 0; i < keypoint_count; ++i) {
+    const std::string field = "keypoints[" + std::to_string(i) + "]";
+    Vec3& k = g.keypoints[static_cast<std::size_t>(i)];
+    k = unit * detail::json_vec3(kps.as_array()[static_cast<std::size_t>(i)], file, field);
+    if (world) k = T_object_world * k;
+    if (!k.allFinite())
+      throw keypoint_error(file, field, "not finite in the object frame (out of range)");
+  }
   return g;
 }
 
@@ -154,27 +156,22 @@ inline const Json& json_field(const Json& doc, std::string_view key, const std::
   return parse_keypoint_grasp(text, path);
 }
 
-/// The hand curves through the keypoints of \p g, one per finger (index, middle, ring, little),
-/// as the human model's hand curves run: thumb tip, IP, MCP, CMC, the palm centre (the centroid
-/// of the wrist and the four finger MCPs), then the finger's MCP, PIP, DIP and tip.
-[[nodiscard]] inline std::array<std::array<Vec3, 9>, 4> keypoint_curves(const KeypointGrasp& g) {
-  const auto& k = g.keypoints;
-  const Vec3 palm = (k[0] + k[5] + k[9] + k[13] + k[17]) / 5.0;
-  std::array<std::array<Vec3, 9>, 4> curves;
-  for (std::size_t f = 0; f < 4; ++f) {
-    const std::size_t base = 5 + 4 * f;
-    curves[f] = {k[4], k[3], k[2], k[1], palm, k[base], k[base + 1], k[base + 2], k[base + 3]};
-  }
-  return curves;
-}
-
-/// The windings (turns) of the four keypoint curves of \p g around \p p (object frame).
-/// \throws topograsp::invalid_argument as winding() for a point that is not finite.
-[[nodiscard]] inline Eigen::Vector4d keypoint_windings(const KeypointGrasp& g, const Vec3& p) {
-  Eigen::Vector4d w;
-  const auto curves = keypoint_curves(g);
-  for (std::size_t f = 0; f < 4; ++f) w[static_cast<Eigen::Index>(f)] = winding(curves[f], p);
-  return w;
+/// The JSON text of \p g in the format above (units m, frame object) with \p source as its
+/// "source" field when not empty: what parse_keypoint_grasp() reads back (numbers to the last
+/// bit).
+[[nodiscard]] inline std::string keypoint_grasp_json(const KeypointGrasp& g,
+                                                     std::string_view source = {}) {
+  Json doc = Json::object();
+  doc.set("format", "topograsp keypoint grasp 1");
+  doc.set("object", g.object);
+  doc.set("units", "m");
+  doc.set("frame", "object");
+  Json points = Json::array();
+  for (const Vec3& k : g.keypoints)
+    points.push_back(Json::array().push_back(k.x()).push_back(k.y()).push_back(k.z()));
+  doc.set("keypoints", points);
+  if (!source.empty()) doc.set("source", std::string(source));
+  return doc.dump() + "\n";
 }
 
 }  // namespace topograsp

@@ -38,8 +38,7 @@ namespace topograsp {
 class mesh_error : public invalid_argument {
  public:
   mesh_error(const std::string& file, int line, const std::string& problem)
-      : invalid_argument(file + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " +
-                         problem) {}
+      : invalid_argument(detail::file_line_message(file, line, problem)) {}
 };
 
 /// The formats parse_mesh() reads.
@@ -80,13 +79,18 @@ void mesh_lines(std::string_view text, F&& take) {
   }
 }
 
-// The mesh with its identical vertices (equal coordinates) made one, triangles renumbered.
+// The mesh with its identical finite vertices (equal coordinates) made one, triangles renumbered.
 inline TriangleMesh weld_vertices(const TriangleMesh& in) {
   TriangleMesh out;
   std::map<std::tuple<double, double, double>, int> index;
   std::vector<int> to(in.vertices.size());
   for (std::size_t i = 0; i < in.vertices.size(); ++i) {
     const Vec3& v = in.vertices[i];
+    if (!v.allFinite()) {  // never welded (NaN is unordered): mesh_problems() names it
+      to[i] = static_cast<int>(out.vertices.size());
+      out.vertices.push_back(v);
+      continue;
+    }
     const auto [it, added] =
         index.try_emplace({v.x(), v.y(), v.z()}, static_cast<int>(out.vertices.size()));
     if (added) out.vertices.push_back(v);

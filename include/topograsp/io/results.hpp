@@ -285,6 +285,11 @@ inline void check_scene_names(const ExperimentOptions& options) {
   cfg.set("shard",
           std::to_string(options.shard_index + 1) + "/" + std::to_string(options.shard_count));
   cfg.set("max_hypotheses", options.max_hypotheses);
+  if (!options.demonstrations.empty()) {  // recorded grasps in place of the planned ones
+    Json sources = Json::array();
+    for (const RecordedGrasp& r : options.demonstrations) sources.push_back(r.source);
+    cfg.set("demonstrations", sources);
+  }
   // 0: each pair from the table of materials (docs/objects.md); else --friction's coefficient.
   cfg.set("friction", options.transfer.sim.friction);
   cfg.set("hand_stiffness", options.transfer.sim.scene.stepper.hand_stiffness);
@@ -319,6 +324,10 @@ inline void check_scene_names(const ExperimentOptions& options) {
   rec.set("object", object.name);
   rec.set("id", g.id);
   rec.set("method", "human");
+  // A recorded demonstration: its file (the object's id-th recording of the run).
+  int k = 0;
+  for (const RecordedGrasp& r : options.demonstrations)
+    if (r.grasp.object == object.name && k++ == g.id) rec.set("demonstration", r.source);
   rec.set("shake_seed", seed);
   rec.set("stable", g.stable());
   rec.set("scene", scene_path(object.name, g.id, "human"));

@@ -92,7 +92,7 @@ struct XmlDocument {
 class xml_error : public invalid_argument {
  public:
   xml_error(std::string file, int line, std::string problem)
-      : invalid_argument(message(file, line, problem)),
+      : invalid_argument(detail::file_line_message(file, line, problem)),
         file_(std::move(file)),
         problem_(std::move(problem)),
         line_(line) {}
@@ -105,17 +105,6 @@ class xml_error : public invalid_argument {
   [[nodiscard]] const std::string& problem() const noexcept { return problem_; }
 
  private:
-  static std::string message(const std::string& file, int line, const std::string& problem) {
-    std::string m = file;
-    if (line > 0) {
-      m += ':';
-      m += std::to_string(line);
-    }
-    m += ": ";
-    m += problem;
-    return m;
-  }
-
   std::string file_;
   std::string problem_;
   int line_;
