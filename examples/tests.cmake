@@ -7,11 +7,16 @@ add_test(NAME "example: wrap" COMMAND wrap --out ${CMAKE_CURRENT_BINARY_DIR}/wra
 add_test(NAME "example: grasp_transfer (small run)"
          COMMAND grasp_transfer --max-hypotheses 4 --jobs 2 --quiet --figures
                  --out ${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_small)
-# The shipped recorded grasps (data/demonstrations) as the demonstrations, two methods.
+# The shipped recorded grasps (data/demonstrations) as the demonstrations (the first of each
+# object), two methods; and the YCB objects (a smoke run: two of them, two hypotheses each).
 add_test(NAME "example: grasp_transfer --demonstrations"
          COMMAND grasp_transfer --demonstrations ${PROJECT_SOURCE_DIR}/data/demonstrations
-                 --methods topological,transplant --jobs 2 --quiet
-                 --out ${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_demonstrations)
+                 --max-hypotheses 1 --methods topological,transplant --judge builtin --jobs 2
+                 --quiet --out ${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_demonstrations)
+add_test(NAME "example: grasp_transfer on YCB objects (small run)"
+         COMMAND grasp_transfer --objects ycb_tomato_soup_can,ycb_banana --max-hypotheses 2
+                 --methods topological,transplant --judge builtin --jobs 2 --quiet
+                 --out ${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_ycb)
 add_test(NAME "example: record_demonstrations"
          COMMAND record_demonstrations --object can --count 1 --noise 1
                  --out ${CMAKE_CURRENT_BINARY_DIR}/recorded)
