@@ -40,7 +40,7 @@ struct BoxDecompositionOptions {
   double gain = 0.9;
   /// Fewest points a half may keep (a split leaving fewer is not taken).
   int min_points = 20;
-  /// Split planes tried per box axis, evenly spaced over the box.
+  /// Slabs each box axis is cut into: the planes - 1 planes between them are the splits tried.
   int planes = 24;
   /// Deepest split (a box is split at most this many times on its way from the root).
   int max_depth = 6;
@@ -48,8 +48,8 @@ struct BoxDecompositionOptions {
   /// by half of it on each side. Without it a split of sampled points always gains the gap of one
   /// spacing between the halves, and a box of a fine grid is split again and again.
   double resolution = 0.005;
-  /// Points per half on which a candidate plane's boxes are found (every k-th point of a larger
-  /// half); the chosen split's boxes use every point.
+  /// About how many of a box's points (every k-th, in order) a candidate plane's two boxes are
+  /// found on, each half on its share of them; the chosen split's boxes use every point.
   int sample = 400;
 };
 
