@@ -47,6 +47,8 @@ TEST_CASE("fit_human_hand refuses keypoints that are not finite", "[grasp][keypo
   KeypointGrasp k;
   k.keypoints[3].y() = std::numeric_limits<double>::quiet_NaN();
   CHECK_THROWS_WITH(fit_human_hand(k), Catch::StartsWith("keypoints: "));
+  // A grasp not yet set has its keypoints at the origin (finite): only the iterations are bad.
+  CHECK(KeypointGrasp{}.keypoints[20] == Vec3::Zero());
   CHECK_THROWS_WITH(fit_human_hand(KeypointGrasp{}, -1), Catch::StartsWith("iterations: "));
 }
 

@@ -23,7 +23,12 @@ inline constexpr int keypoint_count = 21;
 /// A recorded human grasp: its object's name and the 21 keypoints in the object frame (m).
 struct KeypointGrasp {
   std::string object;
-  std::array<Vec3, keypoint_count> keypoints{};
+  /// All at the origin until set (an Eigen vector's `{}` leaves it uninitialised).
+  std::array<Vec3, keypoint_count> keypoints = [] {
+    std::array<Vec3, keypoint_count> a;
+    a.fill(Vec3::Zero());
+    return a;
+  }();
 };
 
 /// The hand curves through the keypoints of \p g, one per finger (index, middle, ring, little),
