@@ -95,6 +95,11 @@ TEST_CASE("a malformed keypoint grasp is refused, naming the file and the field"
   refused("{\"object\": \"bottle\"}", "g.json: format: missing");
   refused("{\"format\": \"v2\"}", "g.json: format: expected");
   refused(document(1.0, ", \"units\": \"inch\""), "g.json: units: expected \"m\" or \"mm\"");
+  refused(document(1.0, ", \"unit\": \"mm\""), "g.json: unit: not a field of the format");
+  refused(document(1.0, ", \"source\": 3"), "g.json: source: expected a string");
+  refused(
+      document(1.0, ", \"object_pose\": {\"position\": [0, 0, 0], \"quaternion\": [1, 0, 0, 0]}"),
+      "g.json: object_pose: given, but the frame is not \"world\"");
   refused(document(1.0, ", \"frame\": \"camera\""), "g.json: frame: expected");
   refused(document(1.0, ", \"frame\": \"world\""), "g.json: object_pose: missing");
   refused(document(1.0,

@@ -83,6 +83,19 @@ inline const Json& json_field(const Json& doc, std::string_view key, const std::
   const Json& format = detail::json_field(doc, "format", file);
   if (!format.is_string() || format.as_string() != "topograsp keypoint grasp 1")
     throw keypoint_error(file, "format", "expected \"topograsp keypoint grasp 1\"");
+  // A key the format does not name is refused: a misspelt one ("unit") must not pass unseen.
+  constexpr std::string_view keys[] = {"format",      "object",    "units", "frame",
+                                       "object_pose", "keypoints", "source"};
+  for (const auto& [key, value] : doc.as_object())
+    if (std::find(std::begin(keys), std::end(keys), key) == std::end(keys))
+      throw keypoint_error(file, key,
+                           "not a field of the format (format, object, units, frame, "
+                           "object_pose, keypoints, source)");
+  if (doc.contains("source") && !doc.at("source").is_string())
+    throw keypoint_error(file, "source", "expected a string");
+  if (doc.contains("object_pose") && !(doc.contains("frame") && doc.at("frame").is_string() &&
+                                       doc.at("frame").as_string() == "world"))
+    throw keypoint_error(file, "object_pose", "given, but the frame is not \"world\"");
   KeypointGrasp g;
   const Json& object = detail::json_field(doc, "object", file);
   if (!object.is_string() || object.as_string().empty())
