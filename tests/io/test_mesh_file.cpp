@@ -117,7 +117,19 @@ TEST_CASE("malformed mesh files are refused with the file, the line and the prob
   CHECK_THROWS_WITH(parse_mesh("v 0 0 0\nv 1 0 0\nf 1 2\n", MeshFormat::obj, "a.obj"),
                     "a.obj:3: a face needs three vertices or more");
   CHECK_THROWS_WITH(parse_mesh("v 0 0 0\nf 0 1 1\n", MeshFormat::obj, "a.obj"),
-                    Catch::StartsWith("a.obj:2: a face's vertex must be a non-zero index"));
+                    Catch::StartsWith("a.obj:2: a face's vertex must be a non-zero integer index"));
+  // A fraction or trailing letters are not an index (read as 1 before).
+  for (const char* face : {"f 1.5 2 3", "f 1 2x 3", "f 1 2 3,"}) {
+    INFO(face);
+    CHECK_THROWS_WITH(parse_mesh(std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\n") + face + "\n",
+                                 MeshFormat::obj, "a.obj"),
+                      Catch::StartsWith("a.obj:4: a face's vertex must be a non-zero integer"));
+  }
+  // Texture and normal indices after the vertex's are allowed.
+  CHECK(parse_mesh(
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1/1/1 3//2 2/3 \nf 1 2 4\nf 1 4 3\nf 2 3 4\n",
+            MeshFormat::obj, "a.obj")
+            .triangles.size() == 4);
   CHECK_THROWS_WITH(parse_mesh("# nothing\n", MeshFormat::obj, "a.obj"),
                     "a.obj: no faces (f) in the OBJ file");
   CHECK_THROWS_WITH(parse_mesh("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 "

@@ -116,8 +116,13 @@ inline TriangleMesh parse_obj(std::string_view text, const std::string& file) {
       while (!(rest = mesh_trim(rest)).empty()) {
         long long i = 0;
         const auto [p, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), i);
-        if (ec != std::errc() || i == 0)
-          throw mesh_error(file, line, "a face's vertex must be a non-zero index (f 1 2 3)");
+        // The index ends the entry or is followed by its texture and normal (1/2/3): "1.5" or
+        // "1x" is not an index.
+        const bool ends = p == rest.data() + rest.size() || *p == '/' || *p == ' ' || *p == '\t';
+        if (ec != std::errc() || i == 0 || !ends)
+          throw mesh_error(file, line,
+                           "a face's vertex must be a non-zero integer index (f 1 2 3 or f "
+                           "1/1/1 2/2/2 3/3/3)");
         const auto n = static_cast<long long>(m.vertices.size());
         const long long index = i < 0 ? n + i : i - 1;
         if (index < 0 || index >= n)
