@@ -118,7 +118,9 @@ TEST_CASE("the six directions come out in the documented order, in the hand fram
   // presses it on the palm (-z) or against a wall (+x, +y), and leaves it otherwise.
   const auto closed =
       closed_scene<corner>(box_object({0.0295, 0.0295, 0.0295}, Vec3(0, 0, 0.0295), 0.3));
-  const StabilityResult r = stability_suite(closed);
+  StabilityOptions every;
+  every.every_test = true;
+  const StabilityResult r = stability_suite(closed, every);
   for (std::size_t i = 0; i < k_stability_tests; ++i) {
     CHECK(r.tests[i].name == names[i]);
     CHECK(to_string(r.tests[i].test) == names[i]);
@@ -149,11 +151,51 @@ TEST_CASE("the six directions come out in the documented order, in the hand fram
   turned.translation() = Vec3(0.2, -0.1, 0.5);
   const auto other = closed_scene<corner>(
       box_object({0.0295, 0.0295, 0.0295}, Vec3(0, 0, 0.0295), 0.3, turned), turned);
-  const StabilityResult t = stability_suite(other);
+  const StabilityResult t = stability_suite(other, every);
   for (std::size_t d = 1; d <= 6; ++d) {
     INFO(t.tests[d].name << ": " << t.tests[d].reason);
     CHECK(t.tests[d].passed == r.tests[d].passed);
   }
+}
+
+TEST_CASE("by default the suite stops at the first failed test, with the same verdict",
+          "[evaluation][stability]") {
+  // The corner tray of the test above: the box leaves it under gravity along -x (test 2).
+  const auto closed =
+      closed_scene<corner>(box_object({0.0295, 0.0295, 0.0295}, Vec3(0, 0, 0.0295), 0.3));
+  StabilityOptions every;
+  every.every_test = true;
+  const StabilityResult all = stability_suite(closed, every);
+  const StabilityResult r = stability_suite(closed);
+  REQUIRE_FALSE(all.stable);
+  CHECK_FALSE(r.stable);
+  CHECK(r.reason == all.reason);
+  const auto first =
+      static_cast<std::size_t>(std::find_if(all.tests.begin(), all.tests.end(),
+                                            [](const StabilityRecord& t) { return !t.passed; }) -
+                               all.tests.begin());
+  REQUIRE(first + 1 < k_stability_tests);
+  // Up to the first failure the records are those of the full suite, bit for bit.
+  for (std::size_t i = 0; i <= first; ++i) {
+    INFO(r.tests[i].name);
+    CHECK(r.tests[i].passed == all.tests[i].passed);
+    CHECK(r.tests[i].reason == all.tests[i].reason);
+    CHECK(r.tests[i].steps == all.tests[i].steps);
+    CHECK(std::memcmp(&r.tests[i].translation, &all.tests[i].translation, sizeof(double)) == 0);
+    CHECK(std::memcmp(&r.tests[i].force_median, &all.tests[i].force_median, sizeof(double)) == 0);
+  }
+  // After it nothing is run, and each record says so.
+  for (std::size_t i = first + 1; i + 1 < k_stability_tests; ++i) {
+    INFO(r.tests[i].name);
+    CHECK(r.tests[i].steps == 0);
+    CHECK_FALSE(r.tests[i].passed);
+    CHECK(r.tests[i].reason == "not run (an earlier test failed)");
+  }
+  CHECK(r.hard_shake().steps == 0);
+  CHECK_FALSE(r.hard_shake().passed);
+  CHECK(r.hard_shake().reason == "not run (the grasp is not stable)");
+  CHECK(all.hard_shake().steps > 0);
+  // (A stable grasp runs every test, the hard shake too: the first test case.)
 }
 
 TEST_CASE("slip right after closing counts: the reference is the closing-end pose",
@@ -203,7 +245,9 @@ TEST_CASE("a closing-end overlap deeper than 1 cm fails every test with its own 
   const auto closed =
       closed_scene<corner>(box_object({0.0295, 0.0295, 0.0295}, Vec3(-0.02, -0.02, 0.0045), 3.0));
   REQUIRE(closed.deepest_penetration() > 0.01);
-  const StabilityResult r = stability_suite(closed);
+  StabilityOptions every;
+  every.every_test = true;
+  const StabilityResult r = stability_suite(closed, every);
   CHECK(r.closing_penetration == closed.deepest_penetration());
   CHECK_FALSE(r.stable);
   for (const StabilityRecord& t : r.tests) {
@@ -227,6 +271,7 @@ TEST_CASE("the suite is random but reproducible", "[evaluation][stability][deter
   StabilityOptions o;
   o.direction_steps = 10;
   o.seed = 7;
+  o.every_test = true;  // the shake fails: the rest would not run
   const StabilityResult a = stability_suite(closed, o), b = stability_suite(closed, o);
   for (std::size_t i = 0; i < k_stability_tests; ++i) {
     CHECK(std::memcmp(&a.tests[i].translation, &b.tests[i].translation, sizeof(double)) == 0);

@@ -106,6 +106,13 @@ TEST_CASE("the option --hold-fraction sets the robot hand's hold fraction", "[io
              Catch::StartsWith("--hold-fraction: given twice"));
 }
 
+TEST_CASE("the flag --every-test runs the whole stability suite on every grasp",
+          "[io][command_line]") {
+  CHECK_FALSE(parse({}).experiment.transfer.sim.stability.every_test);
+  CHECK(parse({"--every-test"}).experiment.transfer.sim.stability.every_test);
+  CHECK_THAT(error_of({"--every-test=1"}), Catch::StartsWith("--every-test=1: unknown option"));
+}
+
 TEST_CASE("the resume flag, and merge with the shards' folders", "[io][command_line]") {
   CHECK_FALSE(parse({}).resume);
   CHECK(parse({"--resume"}).resume);
@@ -273,13 +280,13 @@ TEST_CASE("the option --judge refuses an unknown engine, and MuJoCo where it is 
 
 TEST_CASE("the usage lists every option and every parameter with its range", "[io][command_line]") {
   const std::string usage = command_line_usage();
-  for (const char* option : {"--objects",   "--methods",        "--out",
-                             "--force",     "--jobs",           "--seed",
-                             "--shard",     "--max-hypotheses", "--winding-reference",
-                             "--set",       "--friction",       "--hold-fraction",
-                             "--judge",     "--figures",        "--quiet",
-                             "--help",      "--resume",         "merge",
-                             "exit status", "results.json"}) {
+  for (const char* option : {"--objects",    "--methods",        "--out",
+                             "--force",      "--jobs",           "--seed",
+                             "--shard",      "--max-hypotheses", "--winding-reference",
+                             "--set",        "--friction",       "--hold-fraction",
+                             "--judge",      "--figures",        "--quiet",
+                             "--help",       "--resume",         "merge",
+                             "--every-test", "exit status",      "results.json"}) {
     INFO(option);
     CHECK(usage.find(option) != std::string::npos);
   }

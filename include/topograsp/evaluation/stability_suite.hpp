@@ -69,6 +69,13 @@ struct StabilityOptions {
   double max_penetration = 0.01;
   /// Centre of the shakes' rotations. Default the palm.
   ShakePivot pivot = ShakePivot::palm;
+  /// false (default): the suite stops at the first failed test among those that count (the shake,
+  /// then the six directions in order): the tests after it are not run, and the hard shake runs
+  /// only on a stable grasp. `stable` and `reason` are the same as with true (every test starts
+  /// from its own copy of the closing state), for about half the steps over a run where most
+  /// grasps fail. true: every test runs on every grasp, so an unstable grasp has all its records
+  /// (which directions it fails, how far the object went in each).
+  bool every_test = false;
 };
 
 /// The tests of the suite, in the order of StabilityResult::tests.
@@ -109,7 +116,7 @@ struct StabilityRecord {
   double force_end = 0.0;           ///< total normal force at the end (N)
   double force_ratio = 0.0;         ///< force_median / (m |g|)
   double penetration = 0.0;         ///< deepest hand-object overlap over the steps (m)
-  int steps = 0;                    ///< steps taken
+  int steps = 0;                    ///< steps taken (0: the test was not run)
   Status status = Status::success;  ///< the first failed step's status, else success
 };
 
@@ -303,6 +310,9 @@ inline void validate_stability_options(const StabilityOptions& options,
 ///     +y, -y, +z, -z of the hand frame in turn, options.direction_steps steps each (120);
 ///  3. hard_shake: options.hard_shake (4 rotations of 90 to 180 degrees, 400 steps; a stream
 ///     mixed from the seed), a stress reported apart.
+/// Unless options.every_test, the first of tests 1 and 2 that fails ends the suite: the records
+/// of the tests not run have steps 0, passed false and a reason "not run (...)", and the hard
+/// shake is run only on a stable grasp; `stable` and `reason` do not depend on every_test.
 /// A test passes iff the closing-end overlap is at most max_penetration, every step succeeded,
 /// every measurement is finite, the object still touches the hand (a contact within
 /// touch_distance) and it moved less than max_translation and turned less than max_rotation in
@@ -347,28 +357,39 @@ template <GraspScene Scene>
         scene, m.steps, [&](Scene& s, int k) { s.set_hand_pose(path.pose(k)); }, reference, options,
         out.weight, too_deep, forces, r);
   };
+  // The tests that count, in order; without every_test, the first failure ends the suite.
+  const auto failed = [&](std::size_t i) {
+    if (out.tests[i].passed) return false;
+    if (out.stable)
+      out.reason = std::string(out.tests[i].name) + ": " + std::string(out.tests[i].reason);
+    out.stable = false;
+    return !options.every_test;
+  };
+  out.stable = true;
   shake(options.shake, options.seed, out.tests[0]);
-  for (int d = 0; d < 6; ++d) {
+  bool stopped = failed(0);
+  for (int d = 0; d < 6 && !stopped; ++d) {
+    const auto i = static_cast<std::size_t>(1 + d);
     Scene scene = closed;
     Vec3 local = Vec3::Zero();
     local[d / 2] = d % 2 == 0 ? 1.0 : -1.0;
     scene.set_gravity(magnitude * (start.linear() * local));
     detail::run_test(
         scene, options.direction_steps, [](Scene&, int) {}, reference, options, out.weight,
-        too_deep, forces, out.tests[static_cast<std::size_t>(1 + d)]);
+        too_deep, forces, out.tests[i]);
+    stopped = failed(i);
   }
   StabilityRecord& hard = out.tests[k_stability_tests - 1];
-  if (options.hard_shake.steps > 0)
-    shake(options.hard_shake, detail::splitmix64_mix(options.seed ^ 0x68617264ull), hard);
-  else
+  if (options.hard_shake.steps == 0)
     hard.reason = "not run (options.hard_shake.steps is 0)";
-  out.stable = true;
-  for (std::size_t i = 0; i + 1 < k_stability_tests; ++i)
-    if (!out.tests[i].passed) {
-      out.stable = false;
-      out.reason = std::string(out.tests[i].name) + ": " + std::string(out.tests[i].reason);
-      break;
-    }
+  else if (stopped)
+    hard.reason = "not run (the grasp is not stable)";
+  else
+    shake(options.hard_shake, detail::splitmix64_mix(options.seed ^ 0x68617264ull), hard);
+  if (stopped)
+    for (std::size_t i = 1; i + 1 < k_stability_tests; ++i)
+      if (out.tests[i].steps == 0 && out.tests[i].reason.empty())
+        out.tests[i].reason = "not run (an earlier test failed)";
   return out;
 }
 

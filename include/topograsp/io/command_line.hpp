@@ -233,6 +233,10 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
       cli.resume = true;
       continue;
     }
+    if (arg == "--every-test") {
+      cli.experiment.transfer.sim.stability.every_test = true;
+      continue;
+    }
     constexpr std::string_view value_options[] = {
         "--objects",       "--methods",        "--out",           "--jobs",
         "--seed",          "--max-hypotheses", "--shard",         "--winding-reference",
@@ -419,6 +423,9 @@ options:
                    holding torques
   --judge J        which simulator judges the grasps: builtin, mujoco or both (default both
                    when built with MuJoCo, else builtin; mujoco and both need MuJoCo)
+  --every-test     run every test of the stability suite on every grasp (default: a grasp's
+                   suite stops at its first failed test, the same verdicts in about half the
+                   simulation; docs/evaluation.md)
   --set NAME=VALUE  set a transfer parameter (repeatable, each name once; the names, defaults
                    and valid ranges are listed below, their meaning in docs/transfer.md)
   --figures        also write DIR/figures/*.svg and DIR/index.html (Fig. 5-7, Table I)

@@ -174,19 +174,23 @@ inline Json json_median(std::vector<double> v) {
 }
 
 // The summary of a set of grasp records (one without tests - not simulated - fails every test):
-// how many, how many stable, the rate and its Wilson interval, each test's pass rate, the median
+// how many, how many stable, the rate and its Wilson interval, each test's pass rate over the
+// grasps that ran it (null if none did), the median
 // over the stable ones of the paper shake's force ratio, and the second judge's summary.
 inline Json stability_summary(const std::vector<const Json*>& records) {
   Json s = Json::object();
   const int n = static_cast<int>(records.size());
   int stable = 0;
-  std::array<int, k_stability_tests> passed{};
+  std::array<int, k_stability_tests> passed{}, run{};
   std::vector<double> ratios;
   for (const Json* rec : records) {
     const Json::Array& tests = rec->at("tests").as_array();
     if (tests.size() != k_stability_tests) continue;
-    for (std::size_t i = 0; i < k_stability_tests; ++i)
+    for (std::size_t i = 0; i < k_stability_tests; ++i) {
+      if (tests[i].at("steps").as_number() <= 0.0) continue;
+      ++run[i];
       passed[i] += tests[i].at("passed").as_bool() ? 1 : 0;
+    }
     if (!record_stable(*rec)) continue;
     ++stable;
     const Json& ratio = tests[0].at("force_ratio");
@@ -199,7 +203,8 @@ inline Json stability_summary(const std::vector<const Json*>& records) {
   s.set("interval", json_interval(stable, n));
   Json tests = Json::object();
   for (std::size_t i = 0; i < k_stability_tests; ++i)
-    tests.set(std::string(to_string(static_cast<StabilityTest>(i))), rate(passed[i]));
+    tests.set(std::string(to_string(static_cast<StabilityTest>(i))),
+              run[i] > 0 ? Json(static_cast<double>(passed[i]) / run[i]) : Json());
   s.set("test_pass_rate", tests);
   s.set("median_force_ratio_stable", json_median(std::move(ratios)));
   s.set("second_judge", agreement_summary(records, n));
@@ -255,6 +260,7 @@ inline Json json_stability_options(const StabilityOptions& o, double time_step) 
   j.set("touch_distance", o.touch_distance);
   j.set("max_penetration", o.max_penetration);
   j.set("pivot", o.pivot == ShakePivot::palm ? "palm" : "object");
+  j.set("every_test", o.every_test);
   return j;
 }
 }  // namespace detail
