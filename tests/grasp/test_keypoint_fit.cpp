@@ -4,10 +4,13 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include <catch2/catch.hpp>
 
+#include <topograsp/grasp/experiment.hpp>
 #include <topograsp/grasp/hypothesis.hpp>
 #include <topograsp/grasp/keypoint_fit.hpp>
 
@@ -25,9 +28,9 @@ TEST_CASE("the human model's own keypoints are fitted back to within a millimetr
   truth.q = lower_limits<h>() + 0.6 * (upper_limits<h>() - lower_limits<h>());
   const KeypointGrasp k = human_keypoints(truth, "bottle");
   const KeypointFit fit = fit_human_hand(k);
-  INFO("rms " << fit.rms_error << " m, max " << fit.max_error << " m, " << fit.iterations
+  INFO("rms " << fit.error.rms << " m, max " << fit.error.max << " m, " << fit.iterations
               << " steps");
-  CHECK(fit.max_error < 1e-3);
+  CHECK(fit.error.max < 1e-3);
   const KeypointGrasp back = human_keypoints(fit.grasp, "bottle");
   for (int i = 0; i < keypoint_count; ++i)
     CHECK((back.keypoints[static_cast<std::size_t>(i)] - k.keypoints[static_cast<std::size_t>(i)])
@@ -67,7 +70,13 @@ TEST_CASE("a recorded grasp is a demonstration: the keypoints of a planned one g
   const KeypointGrasp recorded = human_keypoints(source_grasp(*planned), "bottle");
   KeypointFit fit;
   const HumanGrasp g = demonstrate_recorded(bottle, recorded, 7, {}, &fit);
-  CHECK(fit.max_error < 1e-3);
+  CHECK(fit.error.max < 1e-3);
+  // The fit's error goes with the demonstration (results.json's fit_error); a planned one
+  // has none.
+  REQUIRE(g.fit_error);
+  CHECK(g.fit_error->rms == fit.error.rms);
+  CHECK(g.fit_error->max == fit.error.max);
+  CHECK_FALSE(planned->fit_error);
   CHECK(g.id == 7);
   CHECK(g.hypothesis.box == -1);
   REQUIRE(g.reached);
@@ -85,4 +94,34 @@ TEST_CASE("demonstrate_recorded refuses a recording of another object",
   const KeypointGrasp k = human_keypoints(pose, "hammer");
   CHECK_THROWS_WITH(demonstrate_recorded(objects::bottle(), k, 0),
                     Catch::StartsWith("recorded.object: ") && Catch::Contains("\"hammer\""));
+}
+
+TEST_CASE("the experiment warns of a recording the hand fits badly or cannot be placed at",
+          "[grasp][keypoints][experiment]") {
+  // A hand 1.5 times the model's (every keypoint scaled about the wrist: a file in the wrong
+  // units would be off by far more), and a hand 1 m away from the bottle.
+  HandGrasp<models::human_hand> pose;
+  pose.root.translation() = Vec3(-0.12, 0.0, 0.05);
+  KeypointGrasp large = human_keypoints(pose, "bottle");
+  for (Vec3& k : large.keypoints) k = large.keypoints[0] + 1.5 * (k - large.keypoints[0]);
+  KeypointGrasp far = human_keypoints(pose, "bottle");
+  for (Vec3& k : far.keypoints) k += Vec3(-1.0, 0.0, 0.0);
+  ExperimentOptions o;
+  o.objects = {objects::bottle()};
+  o.methods = {TransferMethod::topological};
+  o.demonstrations = {{"large.json", large}, {"far.json", far}};
+  std::string warnings;
+  const std::vector<ObjectResult> r = run_experiment(o, [&](std::string_view line) {
+    if (line.starts_with("warning: ")) warnings += std::string(line) + "\n";
+  });
+  REQUIRE(r.size() == 1);
+  REQUIRE(r[0].human.size() == 2);
+  REQUIRE(r[0].human[0].fit_error);
+  CHECK(r[0].human[0].fit_error->max > k_keypoint_fit_warning);
+  CHECK_FALSE(r[0].human[1].reached);
+  CHECK_THAT(warnings,
+             Catch::Contains("warning: [bottle] recording large.json (hypothesis 0): the human "
+                             "hand fits its keypoints only within") &&
+                 Catch::Contains("warning: [bottle] recording far.json (hypothesis 1): the human "
+                                 "hand cannot be placed at the object"));
 }

@@ -338,6 +338,19 @@ std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& o
         g = recorded[oi].empty()
                 ? demonstrate(object, hyps[oi][i], id, transfer_options.sim)
                 : demonstrate_recorded(object, recorded[oi][i]->grasp, id, transfer_options.sim);
+        if (!recorded[oi].empty()) {
+          const std::string which = "warning: [" + object.name + "] recording " +
+                                    recorded[oi][i]->source + " (hypothesis " + std::to_string(id) +
+                                    "): ";
+          if (g.fit_error && !(g.fit_error->max <= k_keypoint_fit_warning))
+            say(which + "the human hand fits its keypoints only within " +
+                std::to_string(g.fit_error->max) +
+                " m (check its units, frame and keypoint order)");
+          if (!g.reached)
+            say(which +
+                "the human hand cannot be placed at the object along its palm's approach "
+                "from the recorded pose; no record");
+        }
         std::vector<RobotGrasp>& t = transfers[static_cast<std::size_t>(k)];
         if (g.stable()) {
           for (const TransferMethod m : options.methods)

@@ -88,6 +88,12 @@ struct GraspSimOptions {
   return q;
 }
 
+/// How far a human hand fitted to a recording's 21 keypoints is from them (fit_human_hand()).
+struct FitError {
+  double rms = 0.0;  ///< root mean square keypoint distance (m)
+  double max = 0.0;  ///< the largest keypoint distance (m)
+};
+
 /// One human grasp: the hypothesis it comes from, the hand pose and joints it closed to, the
 /// stability suite's verdict and the winding values of the four hand curves around the object's
 /// centre of mass. Poses are in the object frame.
@@ -105,6 +111,9 @@ struct HumanGrasp {
   WindingDescriptor descriptor;           ///< the two largest, which curves
   /// Where the object was when closing ended (it starts at the identity).
   Eigen::Isometry3d object_pose = Eigen::Isometry3d::Identity();
+  /// A recorded demonstration's fit to its keypoints (demonstrate_recorded()); empty for a
+  /// planned one.
+  std::optional<FitError> fit_error;
   [[nodiscard]] bool stable() const noexcept { return reached && stability.stable; }
 };
 

@@ -21,10 +21,15 @@ namespace topograsp {
 /// The human hand fitted to keypoints, and how well.
 struct KeypointFit {
   HandGrasp<models::human_hand> grasp;  ///< the palm's pose (object frame) and the 20 joints
-  double rms_error = 0.0;               ///< root mean square keypoint error (m)
-  double max_error = 0.0;               ///< the largest keypoint error (m)
+  FitError error;                       ///< how far its keypoints are from the recording's
   int iterations = 0;                   ///< least-squares steps taken
 };
+
+/// A fit whose largest keypoint distance is over this (m) is worth a warning (grasp_transfer
+/// prints one): 2 cm is a tenth of the model hand's length, what a hand 10 % larger or smaller
+/// than the model leaves at its fingertips, while a file in the wrong units, frame or keypoint
+/// order is off by decimetres or more.
+inline constexpr double k_keypoint_fit_warning = 0.02;
 
 namespace detail {
 
@@ -140,9 +145,9 @@ inline Eigen::Isometry3d rigid_fit(std::span<const Vec3> a, std::span<const Vec3
   forward_kinematics(d, q);
   fit.grasp.root = link_pose(d, F.find_link(h.links[0].spec.name.view()));
   fit.grasp.q = q.tail<h.nq>();
-  fit.rms_error = std::sqrt(cost / keypoint_count);
+  fit.error.rms = std::sqrt(cost / keypoint_count);
   for (int i = 0; i < keypoint_count; ++i)
-    fit.max_error = std::max(fit.max_error, e.segment<3>(3 * i).norm());
+    fit.error.max = std::max(fit.error.max, e.segment<3>(3 * i).norm());
   return fit;
 }
 
@@ -183,6 +188,7 @@ inline Eigen::Isometry3d rigid_fit(std::span<const Vec3> a, std::span<const Vec3
   if (fit != nullptr) *fit = fitted;
   HumanGrasp g;
   g.id = id;
+  g.fit_error = fitted.error;
   const Eigen::Isometry3d T = grasp_frame<h>(fitted.grasp);
   g.hypothesis.box = g.hypothesis.face = -1;
   g.hypothesis.centre = T.translation();

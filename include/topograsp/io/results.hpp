@@ -334,6 +334,12 @@ inline void check_scene_names(const ExperimentOptions& options) {
   int k = 0;
   for (const RecordedGrasp& r : options.demonstrations)
     if (r.grasp.object == object.name && k++ == g.id) rec.set("demonstration", r.source);
+  if (g.fit_error) {  // how far the fitted hand is from the recording's keypoints (m)
+    Json e = Json::object();
+    e.set("rms", g.fit_error->rms);
+    e.set("max", g.fit_error->max);
+    rec.set("fit_error", e);
+  }
   rec.set("shake_seed", seed);
   rec.set("stable", g.stable());
   rec.set("scene", scene_path(object.name, g.id, "human"));
