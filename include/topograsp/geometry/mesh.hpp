@@ -61,6 +61,16 @@ inline Mat3 mesh_inertia(const MeshMoments& m, double rho) {
   return origin - rho * m.volume * (com.squaredNorm() * Mat3::Identity() - com * com.transpose());
 }
 
+// The mass properties of the solid of moments m at density rho: mesh_mass_properties() without
+// its checks, for a caller that made them.
+inline MassProperties<> mesh_mass(const MeshMoments& m, double rho) {
+  MassProperties<> p;
+  p.mass = rho * m.volume;
+  p.com = m.first / m.volume;
+  p.inertia = mesh_inertia(m, rho);
+  return p;
+}
+
 }  // namespace detail
 
 /// What is wrong with a mesh that should bound a solid: empty if nothing. Each problem says what
@@ -166,12 +176,7 @@ inline void require_closed_mesh(const TriangleMesh& mesh, std::string_view argum
                                                            double density) {
   require_closed_mesh(mesh, "mesh");
   require_positive(density, "density");
-  const detail::MeshMoments m = detail::mesh_moments(mesh);
-  MassProperties<> p;
-  p.mass = density * m.volume;
-  p.com = m.first / m.volume;
-  p.inertia = detail::mesh_inertia(m, density);
-  return p;
+  return detail::mesh_mass(detail::mesh_moments(mesh), density);
 }
 
 }  // namespace topograsp

@@ -50,7 +50,8 @@ struct MeshObjectOptions {
   require_positive(options.spacing, "options.spacing");
   require_valid(options.decomposition, "options.decomposition");
   if (mass == 0.0) require_positive(material.density, "material.density");
-  const double volume = mesh_mass_properties(mesh, 1.0).mass;
+  const detail::MeshMoments moments = detail::mesh_moments(mesh);
+  const double volume = moments.volume;
   const double m = mass > 0.0 ? mass : material.density * volume;
   BoxDecompositionOptions decomposition = options.decomposition;
   decomposition.resolution = options.spacing;
@@ -76,7 +77,7 @@ struct MeshObjectOptions {
                                o.boxes);
   }
   o.mass = m;
-  o.inertial = mesh_mass_properties(mesh, m / volume);
+  o.inertial = detail::mesh_mass(moments, m / volume);
   o.inertial->mass = m;  // exactly the stated mass
   o.validate();
   return o;

@@ -195,25 +195,13 @@ inline TriangleMesh read_mesh(const std::string& path, std::string* why = nullpt
   }
 }
 
-// The volume enclosed by a closed triangle mesh scaled by `scale`, and its centroid (the sum of
-// the signed tetrahedra from the origin to each triangle).
-inline std::pair<double, Vec3> mesh_volume(const TriangleMesh& m, const Vec3& scale) {
-  double volume = 0.0;
-  Vec3 moment = Vec3::Zero();
-  const auto at = [&](int i) {
-    return Vec3(m.vertices[static_cast<std::size_t>(i)].cwiseProduct(scale));
-  };
-  for (const auto& t : m.triangles) {
-    const Vec3 a = at(t[0]), b = at(t[1]), c = at(t[2]);
-    const double v = a.dot(b.cross(c)) / 6.0;
-    volume += v;
-    moment += v * (a + b + c) / 4.0;
-  }
-  if (volume < 0.0) {  // triangles wound inward
-    volume = -volume;
-    moment = -moment;
-  }
-  return {volume, volume > 0.0 ? Vec3(moment / volume) : Vec3::Zero()};
+// The volume enclosed by a closed triangle mesh scaled by `scale`, and its centroid (MuJoCo
+// takes a mesh wound inward as it takes one wound outward).
+inline std::pair<double, Vec3> mesh_volume(TriangleMesh m, const Vec3& scale) {
+  for (Vec3& v : m.vertices) v = v.cwiseProduct(scale);
+  const MeshMoments moments = mesh_moments(m);
+  const double volume = std::abs(moments.volume);
+  return {volume, volume > 0.0 ? Vec3(moments.first / moments.volume) : Vec3::Zero()};
 }
 
 // A box (half extents, centre) bounding the vertices scaled by `scale`.
