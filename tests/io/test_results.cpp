@@ -4,6 +4,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <topograsp/grasp/keypoint_fit.hpp>
+#include <topograsp/io/journal.hpp>
 #include <topograsp/io/results.hpp>
 
 using namespace topograsp;
@@ -48,4 +50,25 @@ TEST_CASE("objects whose names clean to the same file name are refused",
   b.name = "a_c";
   o.objects = {a, b};
   CHECK_NOTHROW(check_scene_names(o));
+}
+
+TEST_CASE("the config names each recorded demonstration and the hash of its grasp",
+          "[io][results][demonstrations]") {
+  HandGrasp<models::human_hand> pose;
+  pose.root.translation() = Vec3(-0.12, 0.0, 0.05);
+  ExperimentOptions o;
+  o.objects = {objects::bottle()};
+  o.demonstrations = {{"a.json", human_keypoints(pose, "bottle")}};
+  const Json first = results_config(o);
+  const Json& d = first.at("demonstrations").as_array().at(0);
+  CHECK(d.at("file").as_string() == "a.json");
+  CHECK(d.at("fnv1a_64").as_string().size() == 16);
+  CHECK(d.at("fnv1a_64").as_string().find_first_not_of("0123456789abcdef") == std::string::npos);
+  CHECK(results_config(o).at("demonstrations").dump(0) == first.at("demonstrations").dump(0));
+  // The same file name with one keypoint moved by a micrometre: another config, so --resume and
+  // merge (which compare configs) refuse to mix the two runs.
+  o.demonstrations[0].grasp.keypoints[8].x() += 1e-6;
+  const Json second = results_config(o);
+  CHECK(second.at("demonstrations").as_array().at(0).at("file").as_string() == "a.json");
+  CHECK(detail::first_config_difference(first, second, {}) == "demonstrations");
 }

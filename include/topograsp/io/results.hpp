@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include <topograsp/grasp/experiment.hpp>
 #include <topograsp/io/file_name.hpp>
 #include <topograsp/io/json.hpp>
+#include <topograsp/io/keypoint_grasp.hpp>
 #include <topograsp/io/mjcf.hpp>
 #include <topograsp/io/output_folder.hpp>
 
@@ -292,8 +294,19 @@ inline void check_scene_names(const ExperimentOptions& options) {
           std::to_string(options.shard_index + 1) + "/" + std::to_string(options.shard_count));
   cfg.set("max_hypotheses", options.max_hypotheses);
   if (!options.demonstrations.empty()) {  // recorded grasps in place of the planned ones
+    // Each with the FNV-1a hash of its grasp as keypoint_grasp_json() writes it, so that --resume
+    // and merge refuse a recording whose file changed in between, not only a renamed one.
     Json sources = Json::array();
-    for (const RecordedGrasp& r : options.demonstrations) sources.push_back(r.source);
+    for (const RecordedGrasp& r : options.demonstrations) {
+      char hash[17];
+      std::snprintf(
+          hash, sizeof hash, "%016llx",
+          static_cast<unsigned long long>(fnv1a_64(keypoint_grasp_json(r.grasp, r.source))));
+      Json d = Json::object();
+      d.set("file", r.source);
+      d.set("fnv1a_64", std::string(hash));
+      sources.push_back(std::move(d));
+    }
     cfg.set("demonstrations", sources);
   }
   // 0: each pair from the table of materials (docs/objects.md); else --friction's coefficient.
