@@ -38,6 +38,7 @@ TEST_CASE("the stability suite allocates per test, never per step", "[evaluation
     o.shake.steps = 20 * scale;
     o.direction_steps = 5 * scale;
     o.hard_shake.steps = 20 * scale;
+    o.every_test = true;  // every test at both scales, whatever the verdicts
     const long before = test::allocations();
     const StabilityResult r = stability_suite(scene, o);
     const long n = test::allocations() - before;

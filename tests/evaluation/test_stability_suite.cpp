@@ -258,7 +258,7 @@ TEST_CASE("a closing-end overlap deeper than 1 cm fails every test with its own 
     CHECK(t.steps > 0);  // the numbers are still measured
   }
   // Allowed deeper overlaps, the same scene is judged on its motion again.
-  StabilityOptions o;
+  StabilityOptions o = every;
   o.max_penetration = 0.05;
   const StabilityResult loose = stability_suite(closed, o);
   CHECK(loose[StabilityTest::gravity_nz].reason !=

@@ -65,7 +65,8 @@ struct StabilityOptions {
   /// The object touches the hand when a contact's separation is at most this (m). Default 1 mm.
   double touch_distance = 0.001;
   /// A grasp whose hand overlaps the object deeper than this when closing ended fails every test
-  /// (m). Default 1 cm, as DexGraspBench/BODex.
+  /// it runs (the shake, and so the suite, unless every_test) (m). Default 1 cm, as
+  /// DexGraspBench/BODex.
   double max_penetration = 0.01;
   /// Centre of the shakes' rotations. Default the palm.
   ShakePivot pivot = ShakePivot::palm;

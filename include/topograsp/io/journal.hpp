@@ -138,8 +138,8 @@ class ResultsJournal {
                 (line.at("config").contains(key) ? line.at("config").at(key).dump(0)
                                                  : std::string("none")) +
                 " there, " + (config.contains(key) ? config.at(key).dump(0) : std::string("none")) +
-                " now); resume with the same options, or start afresh without "
-                "--resume");
+                " now); resume with the same options and the same version of grasp_transfer, or "
+                "start afresh without --resume");
       first = false;
       continue;
     }

@@ -58,21 +58,24 @@ inline Json json_vector(const auto& v) {
   return Json(std::move(a));
 }
 
-// One test's record as results.json writes it.
+// One test's record as results.json writes it; a test that was not run (steps 0) has null for
+// what it would have measured.
 inline Json json_record(const StabilityRecord& t) {
+  const bool run = t.steps > 0;
+  const auto measured = [run](auto value) { return run ? Json(value) : Json(); };
   Json r = Json::object();
   r.set("name", std::string(t.name));
   r.set("passed", t.passed);
   r.set("reason", std::string(t.reason));
-  r.set("translation", t.translation);
-  r.set("rotation", t.rotation);
-  r.set("contacts", t.contacts);
-  r.set("force_median", t.force_median);
-  r.set("force_end", t.force_end);
-  r.set("force_ratio", t.force_ratio);
-  r.set("penetration", t.penetration);
+  r.set("translation", measured(t.translation));
+  r.set("rotation", measured(t.rotation));
+  r.set("contacts", measured(t.contacts));
+  r.set("force_median", measured(t.force_median));
+  r.set("force_end", measured(t.force_end));
+  r.set("force_ratio", measured(t.force_ratio));
+  r.set("penetration", measured(t.penetration));
   r.set("steps", t.steps);
-  r.set("status", std::string(to_string(t.status)));
+  r.set("status", run ? Json(std::string(to_string(t.status))) : Json());
   return r;
 }
 
@@ -175,9 +178,9 @@ inline Json json_median(std::vector<double> v) {
   return Json(n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
 }
 
-// The summary of a set of grasp records (one without tests - not simulated - fails every test):
-// how many, how many stable, the rate and its Wilson interval, each test's pass rate over the
-// grasps that ran it (null if none did), the median
+// The summary of a set of grasp records (one without tests - not simulated - counts in `tested`
+// and fails): how many, how many stable, the rate and its Wilson interval, each test's pass rate
+// over the grasps that ran it (null if none did), the median
 // over the stable ones of the paper shake's force ratio, and the second judge's summary.
 inline Json stability_summary(const std::vector<const Json*>& records) {
   Json s = Json::object();
