@@ -39,7 +39,7 @@ bool is_integer(const Json& j) {
 
 }  // namespace
 
-TEST_CASE("a small experiment: counts, schema and determinism", "[grasp][experiment]") {
+TEST_CASE("a small experiment: counts, schema and determinism", "[grasp][experiment][end_to_end]") {
   const ExperimentOptions config = stable_options(2);
   const std::vector<ObjectResult> results = run_experiment(config);
   REQUIRE(results.size() == 2);

@@ -77,7 +77,7 @@ TEST_CASE("a grasp's seed depends on what it is, not where it is", "[grasp][expe
   CHECK(grasp_seed(1, "bottle", 3) != grasp_seed(2, "bottle", 3));
 }
 
-TEST_CASE("any split of a run reproduces the whole", "[grasp][experiment]") {
+TEST_CASE("any split of a run reproduces the whole", "[grasp][experiment][end_to_end]") {
   const ExperimentOptions both = options({objects::hammer(), objects::bottle()});
   const auto whole = records(both, run_experiment(both));
   const auto bottle_records = of_object(whole, "bottle");

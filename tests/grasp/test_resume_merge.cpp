@@ -48,7 +48,7 @@ std::filesystem::path scratch_folder(const std::string& name) {
 }  // namespace
 
 TEST_CASE("the merged shards of a run give the results.json of the whole run",
-          "[grasp][experiment][merge]") {
+          "[grasp][experiment][merge][end_to_end]") {
   const ExperimentOptions whole = eight_hypotheses();
   const Json expected = results_json(whole, run_experiment(whole));
   REQUIRE(expected.at("objects").as_array()[1].at("stable_human").as_number() == 2.0);
@@ -85,7 +85,7 @@ TEST_CASE("the merged shards of a run give the results.json of the whole run",
 }
 
 TEST_CASE("a run resumed from its journal gives the results.json of the whole run",
-          "[grasp][experiment][resume]") {
+          "[grasp][experiment][resume][end_to_end]") {
   const ExperimentOptions whole = eight_hypotheses();
   const Json expected = results_json(whole, run_experiment(whole));
   const std::filesystem::path dir = scratch_folder("resume");

@@ -2,7 +2,9 @@
 /// \file
 /// The paper's experiment (section IV, Table I) as a library call: human demonstrations on each
 /// object's box hypotheses, the stable ones transferred to the SDH by each method, every result
-/// judged by the stability suite; in parallel, sharded, reproducible.
+/// judged by the stability suite; in parallel, sharded, reproducible. run_experiment is a
+/// template with nothing to give (`template <class = void>`), instantiated only where it is
+/// called (docs/architecture.md, "Compile time").
 #pragma once
 
 #include <algorithm>
@@ -279,9 +281,10 @@ inline void validate_experiment_options(const ExperimentOptions& options) {
 /// objects or the shard (grasp_seed). If fewer than \p options.jobs threads can be started, the
 /// run goes on with those that did (at least the calling thread) and says so once through
 /// \p progress, in a line that starts with "warning: ".
-[[nodiscard]] inline std::vector<ObjectResult> run_experiment(
-    const ExperimentOptions& options, const ProgressFn& progress = {},
-    const HypothesisDoneFn& on_done = {}) {
+template <class = void>
+[[nodiscard]] std::vector<ObjectResult> run_experiment(const ExperimentOptions& options,
+                                                       const ProgressFn& progress = {},
+                                                       const HypothesisDoneFn& on_done = {}) {
   return detail::run_experiment_with(options, progress, on_done, detail::StartStdThread{});
 }
 

@@ -4,6 +4,10 @@
 /// object, the 20-DOF human hand approaches until contact, closes with its motors, and the
 /// stability suite (the paper's shake and the six gravity directions, from the closing-end state)
 /// decides whether the grasp is stable and so kept as a demonstration.
+///
+/// The functions that run the human hand's simulation are templates with nothing to give
+/// (`template <class = void>`): a translation unit that includes this header but does not call
+/// them does not instantiate the hand's stepper (docs/architecture.md, "Compile time").
 #pragma once
 
 #include <functional>
@@ -198,13 +202,13 @@ namespace detail {
 
 // The human hand on its free base at `touched` (6 base coordinates, then the joints it closes
 // from) closed on `object` with the human hand's holding torques (options.human_hold_fraction).
-inline HumanClosing close_human_at(const GraspObject& object, const Vec<26>& touched,
-                                   const GraspSimOptions& options) {
-  constexpr auto& free = models::human_hand_free;
-  KinematicsData<free> d;
+template <class = void>
+HumanClosing close_human_at(const GraspObject& object, const Vec<26>& touched,
+                            const GraspSimOptions& options) {
+  KinematicsData<models::human_hand_free> d;
   forward_kinematics(d, touched);
   HandScene<models::human_hand> scene(
-      link_pose(d, free.link("palm")), touched.tail<20>(),
+      link_pose(d, models::human_hand_free.link("palm")), touched.tail<20>(),
       object_spec(object, HandSurface::human_skin, options.friction), options.scene);
   CloseOptions close = options.close;
   close.hold_fraction = options.human_hold_fraction;
@@ -214,8 +218,9 @@ inline HumanClosing close_human_at(const GraspObject& object, const Vec<26>& tou
 
 // The demonstration `closed` judged into g (reached, pose, joints, the judges' verdicts, the
 // windings of the closed hand around the object's centre of mass).
-inline void judge_human_closing(const GraspObject& object, const HumanClosing& closed,
-                                const GraspSimOptions& options, HumanGrasp& g) {
+template <class = void>
+void judge_human_closing(const GraspObject& object, const HumanClosing& closed,
+                         const GraspSimOptions& options, HumanGrasp& g) {
   const HandScene<models::human_hand>& scene = closed.scene;
   g.reached = true;
   g.hand_pose = scene.hand_pose();
@@ -242,17 +247,19 @@ inline void judge_human_closing(const GraspObject& object, const HumanClosing& c
 /// (options.human_hold_fraction): the grasp demonstrate() judges, for a caller that wants the
 /// scene itself (a benchmark, a figure, another judge). nullopt when the approach does not
 /// reach the object. Throws as close_hand() for bad options.close.
-[[nodiscard]] inline std::optional<HumanClosing> close_human_grasp(
-    const GraspObject& object, const GraspHypothesis& h, const GraspSimOptions& options = {}) {
-  constexpr auto& free = models::human_hand_free;
+template <class = void>
+[[nodiscard]] std::optional<HumanClosing> close_human_grasp(const GraspObject& object,
+                                                            const GraspHypothesis& h,
+                                                            const GraspSimOptions& options = {}) {
   const Composite shape = object.composite();
   const Vec<20> pre = human_preshape();
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.linear() = palm_rotation(human_hand_axes, h.approach, h.up);
   T.translation() = h.centre - options.standoff * h.approach;
-  const Vec<26> start = place_frame<free>(T, free.frame("grasp_centre"), pre);
-  const auto touched = approach_until_contact<free>(start, h.approach, shape, options.contact_gap,
-                                                    2.0 * options.standoff);
+  const Vec<26> start =
+      place_frame<models::human_hand_free>(T, models::human_hand_free.frame("grasp_centre"), pre);
+  const auto touched = approach_until_contact<models::human_hand_free>(
+      start, h.approach, shape, options.contact_gap, 2.0 * options.standoff);
   if (!touched) return std::nullopt;
   return detail::close_human_at(object, *touched, options);
 }
@@ -261,8 +268,9 @@ inline void judge_human_closing(const GraspObject& object, const HumanClosing& c
 /// stand-off, approach until contact, close (close_human_grasp()), then the stability suite on
 /// the scene as closing left it: the grasp is a demonstration only if stable(). Deterministic
 /// for given options. Throws as stability_suite() for bad options.stability.
-[[nodiscard]] inline HumanGrasp demonstrate(const GraspObject& object, const GraspHypothesis& h,
-                                            int id, const GraspSimOptions& options = {}) {
+template <class = void>
+[[nodiscard]] HumanGrasp demonstrate(const GraspObject& object, const GraspHypothesis& h, int id,
+                                     const GraspSimOptions& options = {}) {
   HumanGrasp g;
   g.id = id;
   g.hypothesis = h;

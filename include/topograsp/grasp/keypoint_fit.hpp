@@ -3,7 +3,9 @@
 /// The human hand model fitted to a recorded grasp's 21 keypoints (io/keypoint_grasp.hpp): its
 /// palm placed by the best rigid fit of the palm's keypoints (wrist, thumb CMC, the four finger
 /// MCPs), then its free base and 20 joints fitted by damped least squares, within the joint
-/// limits, to all 21 keypoints. The result is a source grasp for any transfer.
+/// limits, to all 21 keypoints. The result is a source grasp for any transfer. The fit and the
+/// demonstration are templates with nothing to give (`template <class = void>`), instantiated
+/// only where they are called (docs/architecture.md, "Compile time").
 #pragma once
 
 #include <array>
@@ -58,7 +60,8 @@ inline std::array<LinkPoint, keypoint_count> human_keypoint_points() {
 }
 
 // The rotation and translation that best map the points a onto b (least squares, Kabsch).
-inline Eigen::Isometry3d rigid_fit(std::span<const Vec3> a, std::span<const Vec3> b) {
+template <class = void>
+Eigen::Isometry3d rigid_fit(std::span<const Vec3> a, std::span<const Vec3> b) {
   Vec3 ca = Vec3::Zero(), cb = Vec3::Zero();
   for (std::size_t i = 0; i < a.size(); ++i) {
     ca += a[i];
@@ -86,17 +89,18 @@ inline Eigen::Isometry3d rigid_fit(std::span<const Vec3> a, std::span<const Vec3
 /// fingertips and the wrist (the palm's origin) of the model.
 /// \throws topograsp::invalid_argument naming "keypoints" if a keypoint is not finite, or
 ///         "iterations" if it is negative.
-[[nodiscard]] inline KeypointFit fit_human_hand(const KeypointGrasp& g, int iterations = 200) {
+template <class = void>
+[[nodiscard]] KeypointFit fit_human_hand(const KeypointGrasp& g, int iterations = 200) {
   for (const Vec3& k : g.keypoints)
     if (!k.allFinite()) detail::throw_invalid_argument("keypoints", "a keypoint is not finite");
   if (iterations < 0) detail::throw_invalid_argument("iterations", "expected >= 0");
-  constexpr auto& h = models::human_hand;
-  constexpr auto& F = models::human_hand_free;
+  constexpr int n = models::human_hand_free.nq;  // the base, then the hand's joints
   const std::array<LinkPoint, keypoint_count> points = detail::human_keypoint_points();
   // The palm's rigid fit: the wrist, the thumb's CMC and the four MCPs at q = 0.
-  const Vec<h.nq> q0 = clamp_to_limits<h>(Vec<h.nq>::Zero());
-  KinematicsData<F> d;
-  forward_kinematics(d, free_configuration<h>(Eigen::Isometry3d::Identity(), q0));
+  const Vec<models::human_hand.nq> q0 =
+      clamp_to_limits<models::human_hand>(Vec<models::human_hand.nq>::Zero());
+  KinematicsData<models::human_hand_free> d;
+  forward_kinematics(d, free_configuration<models::human_hand>(Eigen::Isometry3d::Identity(), q0));
   constexpr std::array<std::size_t, 6> palm{0, 1, 5, 9, 13, 17};
   std::array<Vec3, 6> model, target;
   for (std::size_t i = 0; i < palm.size(); ++i) {
@@ -104,28 +108,29 @@ inline Eigen::Isometry3d rigid_fit(std::span<const Vec3> a, std::span<const Vec3
     target[i] = g.keypoints[palm[i]];
   }
   const Eigen::Isometry3d root = detail::rigid_fit(model, target);
-  Vec<F.nq> q = free_configuration<h>(root, q0);
-  const Vec<F.nq> lo = lower_limits<F>(), hi = upper_limits<F>();
+  Vec<n> q = free_configuration<models::human_hand>(root, q0);
+  const Vec<n> lo = lower_limits<models::human_hand_free>(),
+               hi = upper_limits<models::human_hand_free>();
   constexpr int rows = 3 * keypoint_count;
-  const auto residual = [&](const Vec<F.nq>& x, Vec<rows>& e) {
+  const auto residual = [&](const Vec<n>& x, Vec<rows>& e) {
     forward_kinematics(d, x);
     for (int i = 0; i < keypoint_count; ++i)
-      e.segment<3>(3 * i) = world_point(d, points[static_cast<std::size_t>(i)]) -
-                            g.keypoints[static_cast<std::size_t>(i)];
+      e.template segment<3>(3 * i) = world_point(d, points[static_cast<std::size_t>(i)]) -
+                                     g.keypoints[static_cast<std::size_t>(i)];
     return e.squaredNorm();
   };
   Vec<rows> e;
   double cost = residual(q, e);
   double lambda = 1e-3;
   KeypointFit fit;
-  Mat<rows, F.nq> J;
+  Mat<rows, n> J;
   for (int it = 0; it < iterations; ++it) {
     for (int i = 0; i < keypoint_count; ++i) {
       const LinkPoint& p = points[static_cast<std::size_t>(i)];
-      J.middleRows<3>(3 * i) = point_jacobian(d, p.link, world_point(d, p));
+      J.template middleRows<3>(3 * i) = point_jacobian(d, p.link, world_point(d, p));
     }
-    const Mat<F.nq, F.nq> H = J.transpose() * J + lambda * Mat<F.nq, F.nq>::Identity();
-    const Vec<F.nq> trial = (q - H.ldlt().solve(J.transpose() * e)).cwiseMax(lo).cwiseMin(hi);
+    const Mat<n, n> H = J.transpose() * J + lambda * Mat<n, n>::Identity();
+    const Vec<n> trial = (q - H.ldlt().solve(J.transpose() * e)).cwiseMax(lo).cwiseMin(hi);
     Vec<rows> et;
     const double c = residual(trial, et);
     ++fit.iterations;
@@ -143,21 +148,22 @@ inline Eigen::Isometry3d rigid_fit(std::span<const Vec3> a, std::span<const Vec3
     }
   }
   forward_kinematics(d, q);
-  fit.grasp.root = link_pose(d, F.find_link(h.links[0].spec.name.view()));
-  fit.grasp.q = q.tail<h.nq>();
+  fit.grasp.root =
+      link_pose(d, models::human_hand_free.find_link(models::human_hand.links[0].spec.name.view()));
+  fit.grasp.q = q.template tail<models::human_hand.nq>();
   fit.error.rms = std::sqrt(cost / keypoint_count);
   for (int i = 0; i < keypoint_count; ++i)
-    fit.error.max = std::max(fit.error.max, e.segment<3>(3 * i).norm());
+    fit.error.max = std::max(fit.error.max, e.template segment<3>(3 * i).norm());
   return fit;
 }
 
 /// The keypoints the human hand model \p grasp places (object frame): what fit_human_hand() fits
 /// (a demonstration's keypoints, for a round trip or a file made from a model grasp).
-[[nodiscard]] inline KeypointGrasp human_keypoints(const HandGrasp<models::human_hand>& grasp,
-                                                   std::string object) {
-  constexpr auto& F = models::human_hand_free;
+template <class = void>
+[[nodiscard]] KeypointGrasp human_keypoints(const HandGrasp<models::human_hand>& grasp,
+                                            std::string object) {
   const std::array<LinkPoint, keypoint_count> points = detail::human_keypoint_points();
-  KinematicsData<F> d;
+  KinematicsData<models::human_hand_free> d;
   forward_kinematics(d, free_configuration<models::human_hand>(grasp.root, grasp.q));
   KeypointGrasp g;
   g.object = std::move(object);
@@ -176,11 +182,11 @@ inline Eigen::Isometry3d rigid_fit(std::span<const Vec3> a, std::span<const Vec3
 /// -1: from no box). Not reached when the hand cannot be placed clear of the object.
 /// \throws topograsp::invalid_argument naming "recorded.object" when the recording names another
 ///         object than \p object, and as fit_human_hand() for keypoints that are not finite.
-[[nodiscard]] inline HumanGrasp demonstrate_recorded(const GraspObject& object,
-                                                     const KeypointGrasp& recorded, int id,
-                                                     const GraspSimOptions& options = {},
-                                                     KeypointFit* fit = nullptr) {
-  constexpr auto& h = models::human_hand;
+template <class = void>
+[[nodiscard]] HumanGrasp demonstrate_recorded(const GraspObject& object,
+                                              const KeypointGrasp& recorded, int id,
+                                              const GraspSimOptions& options = {},
+                                              KeypointFit* fit = nullptr) {
   if (recorded.object != object.name)
     detail::throw_invalid_argument("recorded.object", "the recording is of \"" + recorded.object +
                                                           "\", not of \"" + object.name + "\"");
@@ -189,7 +195,7 @@ inline Eigen::Isometry3d rigid_fit(std::span<const Vec3> a, std::span<const Vec3
   HumanGrasp g;
   g.id = id;
   g.fit_error = fitted.error;
-  const Eigen::Isometry3d T = grasp_frame<h>(fitted.grasp);
+  const Eigen::Isometry3d T = grasp_frame<models::human_hand>(fitted.grasp);
   g.hypothesis.box = g.hypothesis.face = -1;
   g.hypothesis.centre = T.translation();
   g.hypothesis.approach = T.linear().col(2);
@@ -197,22 +203,23 @@ inline Eigen::Isometry3d rigid_fit(std::span<const Vec3> a, std::span<const Vec3
   // Opened toward the planned demonstrations' pre-shape, a tenth of the way at a time, until the
   // hand is clear of the object (all the way when the palm touches it: then the approach below
   // backs the hand off and brings it in again, as a planned demonstration comes in).
-  constexpr auto& free = models::human_hand_free;
   const Composite shape = object.composite();
-  const Vec<h.nq> pre = human_preshape();
-  Vec<h.nq> opened = fitted.grasp.q;
-  KinematicsData<free> d;
+  const Vec<models::human_hand.nq> pre = human_preshape();
+  Vec<models::human_hand.nq> opened = fitted.grasp.q;
+  KinematicsData<models::human_hand_free> d;
   for (int k = 1; k <= 10; ++k) {
-    forward_kinematics(d, free_configuration<h>(fitted.grasp.root, opened));
+    forward_kinematics(d, free_configuration<models::human_hand>(fitted.grasp.root, opened));
     if (hand_object_distance(d, shape) >= options.contact_gap) break;
     opened = fitted.grasp.q + 0.1 * k * (pre - fitted.grasp.q);
   }
-  const Vec3 approach = fitted.grasp.root.linear() * grasp_approach<h>(opened);
-  const std::optional<Eigen::Isometry3d> placed = place_hand_at_contact<h>(
+  const Vec3 approach = fitted.grasp.root.linear() * grasp_approach<models::human_hand>(opened);
+  const std::optional<Eigen::Isometry3d> placed = place_hand_at_contact<models::human_hand>(
       object, fitted.grasp.root, opened, approach, options, options.standoff);
   if (!placed) return g;
   detail::judge_human_closing(
-      object, detail::close_human_at(object, free_configuration<h>(*placed, opened), options),
+      object,
+      detail::close_human_at(object, free_configuration<models::human_hand>(*placed, opened),
+                             options),
       options, g);
   return g;
 }

@@ -9,6 +9,10 @@
 /// along the axis and across the width of the human thumb's opposition to the other four digits).
 /// Each result is closed until contact and judged by the stability suite, the hand without the
 /// arm.
+///
+/// The SDH's methods are templates with nothing to give (`template <class = void>`): a
+/// translation unit that includes this header for another hand does not instantiate the SDH's
+/// planner and stepper (docs/architecture.md, "Compile time").
 #pragma once
 
 #include <algorithm>
@@ -266,9 +270,9 @@ template <const auto& S>
 /// \p q_hand opened until the SDH at \p root (its palm, object frame) is sim.contact_gap clear of
 /// the object (open_hand_until_clear<models::schunk_sdh>): its proximal joints (fingers and thumb)
 /// lowered and its distal joints raised by 0.05 rad a step, the knuckle kept.
-[[nodiscard]] inline Vec<7> open_until_clear(const GraspObject& object,
-                                             const Eigen::Isometry3d& root, const Vec<7>& q_hand,
-                                             const GraspSimOptions& sim) {
+template <class = void>
+[[nodiscard]] Vec<7> open_until_clear(const GraspObject& object, const Eigen::Isometry3d& root,
+                                      const Vec<7>& q_hand, const GraspSimOptions& sim) {
   return open_hand_until_clear<models::schunk_sdh>(object, root, q_hand, sim);
 }
 
@@ -789,8 +793,9 @@ RobotGrasp sdh_from_human(TransferMethod method, const HumanGrasp& g,
 
 /// The paper's baseline on the SDH (transplant_grasp from the human hand), judged also by
 /// options.sim.second_judge_sdh.
-[[nodiscard]] inline RobotGrasp transfer_transplant(const GraspObject& object, const HumanGrasp& g,
-                                                    const TransferOptions& options = {}) {
+template <class = void>
+[[nodiscard]] RobotGrasp transfer_transplant(const GraspObject& object, const HumanGrasp& g,
+                                             const TransferOptions& options = {}) {
   return detail::sdh_from_human(TransferMethod::transplant, g, options, [&](auto s, auto& second) {
     return transplant_grasp<models::schunk_sdh>(object, s, options, second);
   });
@@ -799,26 +804,27 @@ RobotGrasp sdh_from_human(TransferMethod method, const HumanGrasp& g,
 /// The fingertip mapping of Table I: the human grasp \p g to the SDH (fingertip_grasp: the human's
 /// thumb, index and ring tips onto the SDH's thumb, finger 1 and finger 2 tips), judged also by
 /// options.sim.second_judge_sdh.
-[[nodiscard]] inline RobotGrasp transfer_fingertip(const GraspObject& object, const HumanGrasp& g,
-                                                   const TransferOptions& options = {}) {
+template <class = void>
+[[nodiscard]] RobotGrasp transfer_fingertip(const GraspObject& object, const HumanGrasp& g,
+                                            const TransferOptions& options = {}) {
   return detail::sdh_from_human(TransferMethod::fingertip, g, options, [&](auto s, auto& second) {
     return fingertip_grasp<models::schunk_sdh>(object, s, options, second);
   });
 }
 
 /// The fingertip targets of transfer_fingertip (fingertip_targets), the SDH's thumb tip's first.
-[[nodiscard]] inline std::array<Vec3, 3> fingertip_targets(const GraspObject& object,
-                                                           const HumanGrasp& g,
-                                                           const TransferOptions& options = {}) {
+template <class = void>
+[[nodiscard]] std::array<Vec3, 3> fingertip_targets(const GraspObject& object, const HumanGrasp& g,
+                                                    const TransferOptions& options = {}) {
   return fingertip_targets<models::schunk_sdh>(object, source_grasp(g), options);
 }
 
 /// The virtual-finger mapping of Table I: the human grasp \p g to the SDH (virtual_finger_grasp:
 /// the SDH's thumb opposes the midpoint of its two finger tips), judged also by
 /// options.sim.second_judge_sdh.
-[[nodiscard]] inline RobotGrasp transfer_virtual_finger(const GraspObject& object,
-                                                        const HumanGrasp& g,
-                                                        const TransferOptions& options = {}) {
+template <class = void>
+[[nodiscard]] RobotGrasp transfer_virtual_finger(const GraspObject& object, const HumanGrasp& g,
+                                                 const TransferOptions& options = {}) {
   return detail::sdh_from_human(
       TransferMethod::virtual_finger, g, options, [&](auto s, auto& second) {
         return virtual_finger_grasp<models::schunk_sdh>(object, s, options, second);
@@ -843,9 +849,9 @@ RobotGrasp sdh_from_human(TransferMethod method, const HumanGrasp& g,
 }
 
 /// The human's descriptor y of \p g around \p p (object frame): its two largest windings.
-[[nodiscard]] inline WindingDescriptor human_descriptor(const HumanGrasp& g, const Vec3& p) {
-  constexpr auto& h = models::human_hand;
-  KinematicsData<h> d;
+template <class = void>
+[[nodiscard]] WindingDescriptor human_descriptor(const HumanGrasp& g, const Vec3& p) {
+  KinematicsData<models::human_hand> d;
   forward_kinematics(d, g.q);
   return winding_descriptor(d, Vec3(g.hand_pose.inverse() * p));
 }
@@ -1030,8 +1036,9 @@ HandTransfer<M> topological_on_arm(const GraspObject& object, const Eigen::Isome
 /// The final hand, without the arm, moves on along its approach until contact, is closed until
 /// contact and shaken (detail::topological_on_arm, which any hand on the arm shares:
 /// transfer_hand_on_arm).
-[[nodiscard]] inline RobotGrasp transfer_topological(const GraspObject& object, const HumanGrasp& g,
-                                                     const TransferOptions& options = {}) {
+template <class = void>
+[[nodiscard]] RobotGrasp transfer_topological(const GraspObject& object, const HumanGrasp& g,
+                                              const TransferOptions& options = {}) {
   const auto t0 = detail::Clock::now();
   if (std::string problem = detail::unusable_human_grasp(g); !problem.empty()) {
     RobotGrasp r;
@@ -1069,8 +1076,9 @@ HandTransfer<M> topological_on_arm(const GraspObject& object, const Eigen::Isome
 
 /// Runs \p method on the human grasp \p g (a topological variant with
 /// transfer_method_options); the result's method is \p method.
-[[nodiscard]] inline RobotGrasp transfer(TransferMethod method, const GraspObject& object,
-                                         const HumanGrasp& g, const TransferOptions& options) {
+template <class = void>
+[[nodiscard]] RobotGrasp transfer(TransferMethod method, const GraspObject& object,
+                                  const HumanGrasp& g, const TransferOptions& options) {
   switch (method) {
     case TransferMethod::transplant:
       return transfer_transplant(object, g, options);

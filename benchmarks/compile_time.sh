@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# The compile time of representative user translation units (docs/benchmarks.md, "Compile time"):
+# each file is compiled on its own, one after the other, with the release flags of a user's build,
+# and its CPU time (user + system) and peak memory are printed as a Markdown table.
+#
+#   benchmarks/compile_time.sh                 # g++ -O2, every unit
+#   CXX=clang++ benchmarks/compile_time.sh     # another compiler
+#   FLAGS="-O3 -DNDEBUG" benchmarks/compile_time.sh tour_kinematics sdh_on_arm   # some units
+#
+# The units (benchmarks/compile_time/*.cpp, and three files of the repository):
+#   tour_kinematics         the README tour's first snippet: <topograsp/topograsp.hpp>, SDH FK
+#   hand_kinematics         one imported hand's kinematics and the windings of its curves
+#   imported_hand_transfer  human demonstrations transferred to an imported hand by every method
+#   sdh_on_arm              the README tour's transfer: the SDH on the arm, transfer_topological
+#   grasp_transfer          the main example, examples/grasp_transfer.cpp
+#   test_<module>           a test module as CMake builds it (its files in one unity unit)
+# Nothing is built or run besides the compiler; objects go to a temporary folder.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+cxx=${CXX:-g++}
+flags=${FLAGS:-"-O2 -DNDEBUG"}
+units=("$@")
+if ((${#units[@]} == 0)); then
+  units=(tour_kinematics hand_kinematics imported_hand_transfer sdh_on_arm grasp_transfer
+         test_any_hand)
+fi
+if [[ ! -x /usr/bin/time ]]; then
+  echo "compile_time.sh: needs GNU time (/usr/bin/time, Debian package time)" >&2
+  exit 2
+fi
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+common=(-std=c++20 -I"$root/include" -isystem /usr/include/eigen3
+        "-DTOPOGRASP_DATA_DIR=\"$root/data\"")
+# The optional peers, as the project's build passes them where they are installed.
+optional=()
+if [[ -f /usr/include/mujoco/mujoco.h ]]; then optional+=(-DTOPOGRASP_HAVE_MUJOCO); fi
+if [[ -f /usr/include/libqhull_r/libqhull_r.h ]]; then optional+=(-DTOPOGRASP_HAVE_QHULL); fi
+
+echo "| unit | CPU s | peak MB |"
+echo "| --- | --- | --- |"
+for unit in "${units[@]}"; do
+  extra=()
+  case $unit in
+    grasp_transfer) source=$root/examples/grasp_transfer.cpp; extra=("${optional[@]}") ;;
+    test_*)
+      module=${unit#test_}
+      if [[ ! -d $root/tests/$module ]]; then
+        echo "compile_time.sh: no test module tests/$module" >&2
+        exit 2
+      fi
+      source=$work/$unit.cpp
+      for file in "$root"/tests/"$module"/*.cpp; do echo "#include \"$file\""; done > "$source"
+      extra=(-I"$root/tests" -DEIGEN_RUNTIME_NO_MALLOC "${optional[@]}")
+      ;;
+    *) source=$root/benchmarks/compile_time/$unit.cpp ;;
+  esac
+  if [[ ! -f $source ]]; then
+    echo "compile_time.sh: no unit $unit ($source)" >&2
+    exit 2
+  fi
+  # shellcheck disable=SC2086 # $flags is a list of flags
+  if ! /usr/bin/time -o "$work/time" -f "%U %S %M" "$cxx" "${common[@]}" $flags "${extra[@]}" \
+       -c "$source" -o "$work/unit.o" 2> "$work/log"; then
+    cat "$work/log" >&2
+    echo "compile_time.sh: $unit does not compile" >&2
+    exit 1
+  fi
+  awk -v unit="$unit" '{ printf "| %s | %.1f | %d |\n", unit, $1 + $2, $3 / 1024 }' "$work/time"
+done
