@@ -6,8 +6,6 @@
 /// it (the halves' boxes fill at most `gain` of their parent's volume) and each half keeps enough
 /// points. Candidate planes are scored on a sample of each half's points (the boxes of a dense
 /// surface sample are fixed by few of them); the chosen split is checked on all of them.
-/// minimum_volume_box (an eigen-decomposition) is a template with nothing to give, instantiated
-/// only where it is called (docs/architecture.md, "Compile time").
 #pragma once
 
 #include <algorithm>
@@ -89,8 +87,7 @@ inline OrientedBox box_with_axes(std::span<const Vec3> points, const Mat3& R) {
 /// the principal axes of the points, then improved by turning it about each of its axes in turn
 /// (a search over 90 degrees in 1-degree steps, refined to 0.05 degrees) while that shrinks it.
 /// \throws topograsp::invalid_argument naming "points" if empty or not finite.
-template <class = void>
-[[nodiscard]] OrientedBox minimum_volume_box(std::span<const Vec3> points) {
+[[nodiscard]] inline OrientedBox minimum_volume_box(std::span<const Vec3> points) {
   if (points.empty()) detail::throw_invalid_argument("points", "expected at least one point");
   Vec3 mean = Vec3::Zero();
   for (const Vec3& p : points) {
