@@ -4,6 +4,8 @@
 /// and GraspIt use them: each contact's friction cone linearised into edges, each edge a unit
 /// normal force plus its friction, its torque about the object's centre divided by a length.
 /// Eigen only: the hull itself (qhull) is in grasp_quality.hpp. See docs/evaluation.md.
+/// affine_dimension (an SVD) is a template with nothing to give, instantiated only where it is
+/// called (docs/architecture.md, "Compile time").
 #pragma once
 
 #include <algorithm>
@@ -103,8 +105,9 @@ inline void contact_wrenches(std::span<const ContactForQuality> contacts, const 
 
 /// The affine dimension (0 to 6) of the points \p w (columns): the number of singular values of
 /// the centred points above \p relative_tolerance times the largest. 0 for fewer than 2 points.
-[[nodiscard]] inline int affine_dimension(const Eigen::Matrix<double, 6, Eigen::Dynamic>& w,
-                                          double relative_tolerance = 1e-7) {
+template <class = void>
+[[nodiscard]] int affine_dimension(const Eigen::Matrix<double, 6, Eigen::Dynamic>& w,
+                                   double relative_tolerance = 1e-7) {
   if (w.cols() < 2) return 0;
   const Vec<6> mean = w.rowwise().mean();
   const Eigen::Matrix<double, 6, Eigen::Dynamic> centred = w.colwise() - mean;
