@@ -7,6 +7,8 @@
 /// Qhull::qhull_r; in this project the target topograsp_qhull, which defines
 /// TOPOGRASP_HAVE_QHULL): the core library does not depend on it. Including this header brings in
 /// qhull's C macros (True, False, boolT, FORALLfacets, ...). See docs/evaluation.md.
+/// Both ferrari_canny_epsilon overloads are templates with nothing to give, instantiated only where
+/// they are called (docs/architecture.md, "Compile time").
 #pragma once
 
 #include <cstdint>
@@ -145,7 +147,8 @@ inline int run_qhull(const Eigen::Matrix<double, 6, Eigen::Dynamic>& wrenches,
 /// when it fails on them it runs once more with joggled input (k_qhull_fallback_options), and
 /// GraspQuality::qhull_options says which built the hull. Thread-safe (each call has its own qhull
 /// state); allocates. Throws topograsp::invalid_argument naming "wrenches" for a non-finite entry.
-[[nodiscard]] inline GraspQuality ferrari_canny_epsilon(
+template <class = void>
+[[nodiscard]] GraspQuality ferrari_canny_epsilon(
     const Eigen::Matrix<double, 6, Eigen::Dynamic>& wrenches) {
   require_finite(wrenches, "wrenches");
   GraspQuality out;
@@ -202,9 +205,10 @@ inline int run_qhull(const Eigen::Matrix<double, 6, Eigen::Dynamic>& wrenches,
 /// coplanar) is degenerate with epsilon 0, never an exception. Throws as contact_wrenches() for
 /// bad input (a non-finite point, a zero normal, a negative friction, torque_scale <= 0, edges
 /// < 3), naming the argument.
-[[nodiscard]] inline GraspQuality ferrari_canny_epsilon(std::span<const ContactForQuality> contacts,
-                                                        const Vec3& centre, double torque_scale,
-                                                        const QualityOptions& options = {}) {
+template <class = void>
+[[nodiscard]] GraspQuality ferrari_canny_epsilon(std::span<const ContactForQuality> contacts,
+                                                 const Vec3& centre, double torque_scale,
+                                                 const QualityOptions& options = {}) {
   Eigen::Matrix<double, 6, Eigen::Dynamic> w;
   contact_wrenches(contacts, centre, torque_scale, options, w);
   return ferrari_canny_epsilon(w);
