@@ -11,7 +11,6 @@
 #include <cstdio>
 #include <ctime>
 #include <topograsp/aico.hpp>
-#include <topograsp/grasp/any_hand.hpp>
 #include <topograsp/grasp/transfer.hpp>
 #include <topograsp/model/models.hpp>
 #include <topograsp/model/models/allegro_hand.hpp>
@@ -62,8 +61,8 @@ void BM_eigen_gemm_256(benchmark::State& state) {
 }
 BENCHMARK(BM_eigen_gemm_256)->Unit(benchmark::kMicrosecond);
 
-// A cheap joint-space stack: message_passes() never evaluates it; it only fills the initial task
-// messages with something positive definite.
+// A cheap joint-space stack: detail::message_passes() never evaluates it; it only fills the initial
+// task messages with something positive definite.
 struct PostureStack {
   using Kinematics = KinematicsData<robot>;
   static constexpr int dim = nq;
@@ -95,7 +94,7 @@ void BM_message_sweep(benchmark::State& state) {
   const double t0 = cpu_seconds();
   std::int64_t n = 0;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(message_passes(problem, ws));
+    benchmark::DoNotOptimize(detail::message_passes(problem, ws));
     ++n;
   }
   g_fixed_seconds = (cpu_seconds() - t0) / static_cast<double>(n);
@@ -180,20 +179,20 @@ void BM_sweep_with_transfer_tasks(benchmark::State& state) {
   AicoProblem<robot, TransferStack> problem(stack, scene.home, bench_options());
   AicoWorkspace ws(problem);
   (void)initialise(problem, ws);
-  int relocations = 0;
+  int task_evaluations = 0;
   for (auto _ : state) {
     // From the same accepted state every time: sweep() writes the candidate buffers, and a
     // rejected sweep leaves the accepted ones as they were; force rejection by undoing accepts.
     const int current = ws.current;
     const double cost = ws.cost, alpha = ws.alpha;
     const AicoSweepRecord rec = sweep(problem, ws);
-    relocations = rec.relocations;
+    task_evaluations = rec.task_evaluations;
     ws.current = current;
     ws.cost = cost;
     ws.alpha = alpha;
   }
   report_share(state);
-  state.counters["task evaluations"] = relocations;
+  state.counters["task evaluations"] = task_evaluations;
 }
 BENCHMARK(BM_sweep_with_transfer_tasks)->Unit(benchmark::kMicrosecond);
 
@@ -223,7 +222,7 @@ void BM_transfer_topological_hammer(benchmark::State& state) {
   double plan_ms = 0.0;
   int sweeps = 0;
   for (auto _ : state) {
-    const RobotGrasp r = transfer_topological(hammer, g);
+    const SdhTransfer r = transfer_topological(hammer, g);
     plan_ms = r.plan_ms;
     sweeps = r.sweeps;
     benchmark::DoNotOptimize(r.stability.stable);

@@ -194,12 +194,12 @@ int merge(const CommandLine& cli, bool& started, bool& committing) {
 // The MJCF scene of each grasp of a hypothesis, into dir/scenes.
 void write_scenes(const std::filesystem::path& dir, const ExperimentOptions& experiment,
                   const GraspObject& object, const HumanGrasp& g,
-                  const std::vector<RobotGrasp>& transfers) {
+                  const std::vector<SdhTransfer>& transfers) {
   if (!g.reached) return;
   detail::write_text_file(
       dir / scene_path(object.name, g.id, "human"),
       grasp_mjcf<models::human_hand>(object, g.hand_pose, g.q, g.object_pose, experiment.transfer));
-  for (const RobotGrasp& t : transfers)
+  for (const SdhTransfer& t : transfers)
     if (t.planned)
       detail::write_text_file(dir / scene_path(object.name, g.id, to_string(t.method)),
                               grasp_mjcf<models::schunk_sdh>(object, t.hand_pose, t.q_closed,
@@ -273,10 +273,10 @@ int run(CommandLine& cli, bool& started, bool& committing) {
     progress(std::to_string(resumed.size()) + " hypotheses taken over from an interrupted run");
   // Each finished hypothesis: its scenes, then its line in the journal.
   const HypothesisDoneFn on_done = [&](const GraspObject& object, const HumanGrasp& g,
-                                       const std::vector<RobotGrasp>& transfers) {
+                                       const std::vector<SdhTransfer>& transfers) {
     write_scenes(stage, cli.experiment, object, g, transfers);
-    std::vector<const RobotGrasp*> ts;
-    for (const RobotGrasp& t : transfers) ts.push_back(&t);
+    std::vector<const SdhTransfer*> ts;
+    for (const SdhTransfer& t : transfers) ts.push_back(&t);
     journal.append({object.name, g.id, hypothesis_records(cli.experiment, object, g, ts)});
   };
   const auto t0 = std::chrono::steady_clock::now();

@@ -5,7 +5,7 @@
 // bottle, each stable one transferred to the hand by every method of transfer_hand.
 #include <cstdio>
 
-#include <topograsp/grasp/any_hand.hpp>
+#include <topograsp/grasp/transfer/hand.hpp>
 #include <topograsp/model/models/allegro_hand.hpp>
 
 int main() {

@@ -11,6 +11,6 @@ int main() {
   const GraspObject hammer = objects::hammer();
   const auto hypotheses = box_hypotheses(hammer);
   const HumanGrasp demo = demonstrate(hammer, hypotheses[26], 26);
-  const RobotGrasp sdh = transfer_topological(hammer, demo);
+  const SdhTransfer sdh = transfer_topological(hammer, demo);
   std::printf("%s after %d sweeps\n", sdh.stable() ? "stable" : "unstable", sdh.sweeps);
 }

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include <topograsp/grasp/any_hand.hpp>
+#include <topograsp/grasp/transfer/hand.hpp>
 #include <topograsp/model/models/allegro_hand.hpp>
 #include <topograsp/model/models/leap_hand.hpp>
 #include <topograsp/model/models/shadow_hand.hpp>

@@ -4,7 +4,6 @@
 /// experiment of the paper.
 #pragma once
 
-#include <topograsp/grasp/any_hand.hpp>
 #include <topograsp/grasp/experiment.hpp>
 #include <topograsp/grasp/hand_axes.hpp>
 #include <topograsp/grasp/hand_grasp.hpp>

@@ -134,10 +134,10 @@ TEST_CASE("the RTS and the backward-message passes give the same beliefs", "[aic
   AicoWorkspace ws_a(rts), ws_b(messages);
   (void)initialise(rts, ws_a);
   (void)initialise(messages, ws_b);
-  REQUIRE(message_passes(rts, ws_a));
-  REQUIRE(message_passes(messages, ws_b));
-  const auto& a = candidate_beliefs(ws_a);
-  const auto& b = candidate_beliefs(ws_b);
+  REQUIRE(detail::message_passes(rts, ws_a));
+  REQUIRE(detail::message_passes(messages, ws_b));
+  const auto& a = detail::candidate_beliefs(ws_a);
+  const auto& b = detail::candidate_beliefs(ws_b);
   for (std::size_t u = 0; u < a.size(); ++u)
     CHECK((a[u] - b[u]).norm() <= 1e-8 * (1.0 + b[u].norm()));
 }

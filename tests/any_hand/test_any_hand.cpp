@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Any hand to any hand (grasp/any_hand.hpp): hand profiles, the frame two hands meet in, the
-// winding targets of a hand with more or fewer curves than the source, the fingertip
-// correspondence, transfer_hand (every method) on an imported hand from the human hand and from
-// the SDH, transfer_hand_on_arm, and what they do with bad input.
+// Any hand to any hand (grasp/transfer/hand.hpp, and the SDH's Table I methods it matches): hand
+// profiles, the frame two hands meet in, the winding targets of a hand with more or fewer curves
+// than the source, the fingertip correspondence, transfer_hand (every method) on an imported hand
+// from the human hand and from the SDH, transfer_hand_on_arm, and what they do with bad input.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -10,7 +10,7 @@
 
 #include <catch2/catch.hpp>
 
-#include <topograsp/grasp/any_hand.hpp>
+#include <topograsp/grasp/transfer.hpp>
 #include <topograsp/model/models/allegro_hand.hpp>
 #include <topograsp/model/models/shadow_hand.hpp>
 
@@ -167,7 +167,7 @@ TEST_CASE("SDH -> Allegro: a robot grasp is a source; two SDH curves give three 
   const GraspObject bottle = objects::bottle();
   const HumanGrasp& g = bottle_demonstration();
   REQUIRE(g.stable());
-  const RobotGrasp sdh = transfer(TransferMethod::transplant, bottle, g, TransferOptions{});
+  const SdhTransfer sdh = transfer(TransferMethod::transplant, bottle, g, TransferOptions{});
   REQUIRE(sdh.planned);
   const auto r =
       transfer_hand<models::allegro_hand>(TransferMethod::topological, bottle, source_grasp(sdh));
@@ -261,7 +261,7 @@ TEST_CASE("human -> Allegro on the arm: the paper's planner for any hand", "[any
   // (the human's two largest windings, to rounding) and the same plan.
   const auto sdh = transfer_hand_on_arm<models::schunk_sdh>(TransferMethod::topological, bottle,
                                                             source_grasp(g));
-  const RobotGrasp table = transfer_topological(bottle, g);
+  const SdhTransfer table = transfer_topological(bottle, g);
   REQUIRE(sdh.planned);
   REQUIRE(table.planned);
   CHECK((*sdh.source_winding - g.descriptor.values).norm() < 1e-9);

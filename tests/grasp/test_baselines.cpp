@@ -119,7 +119,7 @@ TEST_CASE("the virtual-finger mapping finds the opposition of the human grasp",
   const GraspObject hammer = objects::hammer();
   const HumanGrasp& wrap = demonstration(hammer, 47);
   REQUIRE(wrap.stable());
-  const RobotGrasp palm = transfer_virtual_finger(hammer, wrap, options);
+  const SdhTransfer palm = transfer_virtual_finger(hammer, wrap, options);
   CHECK(palm.planned);
   CHECK(palm.method == TransferMethod::virtual_finger);
   CHECK(palm.reason == "palm opposition");
@@ -138,7 +138,7 @@ TEST_CASE("the virtual-finger mapping finds the opposition of the human grasp",
   // and the SDH's thumb-to-fingers axis is turned onto the human's.
   const HumanGrasp& tips = demonstration(hammer, 65);
   REQUIRE(tips.stable());
-  const RobotGrasp pad = transfer_virtual_finger(hammer, tips, options);
+  const SdhTransfer pad = transfer_virtual_finger(hammer, tips, options);
   CHECK(pad.planned);
   CHECK(pad.reason == "pad opposition");
   constexpr auto& h = models::human_hand;
@@ -161,7 +161,7 @@ TEST_CASE("the virtual-finger mapping refuses a human grasp with NaN",
   const GraspObject hammer = objects::hammer();
   HumanGrasp bad = demonstration(hammer, 47);
   bad.q[3] = std::nan("");
-  const RobotGrasp r = transfer_virtual_finger(hammer, bad);
+  const SdhTransfer r = transfer_virtual_finger(hammer, bad);
   CHECK_FALSE(r.planned);
   CHECK(r.reason == "the human configuration is not finite");
 }
@@ -171,9 +171,9 @@ TEST_CASE("closing corrections keep the plan whose closed windings are nearest t
   const GraspObject hammer = objects::hammer();
   const HumanGrasp& g = demonstration(hammer, 47);
   TransferOptions options;
-  const RobotGrasp plain = transfer_topological(hammer, g, options);
+  const SdhTransfer plain = transfer_topological(hammer, g, options);
   options.closing_corrections = 2;
-  const RobotGrasp corrected = transfer_topological(hammer, g, options);
+  const SdhTransfer corrected = transfer_topological(hammer, g, options);
   REQUIRE(plain.planned);
   REQUIRE(corrected.planned);
   const Vec2 y = g.descriptor.values;

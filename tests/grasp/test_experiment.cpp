@@ -252,7 +252,7 @@ TEST_CASE("each method on a hand-picked hammer grasp", "[grasp][transfer]") {
   CHECK(g.descriptor.values[0] >= g.descriptor.values[1]);
   CHECK(g.descriptor.values[0] > 0.5);  // the hand wraps the handle
   const TransferOptions options;
-  const RobotGrasp topo = transfer_topological(hammer, g, options);
+  const SdhTransfer topo = transfer_topological(hammer, g, options);
   CHECK(topo.planned);
   CHECK(topo.stable());
   CHECK(topo.sweeps > 0);
@@ -260,13 +260,13 @@ TEST_CASE("each method on a hand-picked hammer grasp", "[grasp][transfer]") {
   // The plan ends nearer the human's windings than it started.
   const Vec2 y = g.descriptor.values;
   CHECK((topo.winding_plan.back() - y).norm() < (topo.winding_plan.front() - y).norm());
-  const RobotGrasp transplant = transfer_transplant(hammer, g, options);
+  const SdhTransfer transplant = transfer_transplant(hammer, g, options);
   CHECK(transplant.planned);
   CHECK(transplant.stable());
   // The fingertip mapping scales the human tips by the ratio of the digits' lengths: the SDH's
   // thumb, finger 1 and finger 2 (0.1715 m each) against the human thumb, index and ring.
   CHECK((fingertip_scale<models::schunk_sdh, models::human_hand>()) == Approx(2.175).epsilon(2e-3));
-  const RobotGrasp fingertip = transfer_fingertip(hammer, g, options);
+  const SdhTransfer fingertip = transfer_fingertip(hammer, g, options);
   CHECK(fingertip.planned);
   // Every test up to the first failure is measured; the suite stops there.
   bool stopped = false;
@@ -291,14 +291,14 @@ TEST_CASE("the line task keeps the SDH on the part the human held", "[grasp][tra
   REQUIRE(g.stable());
   CHECK(g.descriptor.values[0] < 0.35);
   const Eigen::Isometry3d human = detail::sdh_grasp_target(g);
-  const auto off_line = [&](const RobotGrasp& r) {
+  const auto off_line = [&](const SdhTransfer& r) {
     const Vec3 off = r.hand_pose * Vec3(0, 0, 0.15) - human.translation();  // SDH grasp_centre
     return (off - off.dot(human.linear().col(2)) * human.linear().col(2)).norm();
   };
   TransferOptions options;
-  const RobotGrasp on_line = transfer_topological(hammer, g, options);
+  const SdhTransfer on_line = transfer_topological(hammer, g, options);
   options.line_precision_mid = options.line_precision_end = 0.0;
-  const RobotGrasp free = transfer_topological(hammer, g, options);
+  const SdhTransfer free = transfer_topological(hammer, g, options);
   INFO("grasp centre off the human's approach line: "
        << off_line(on_line) << " m with the line task, " << off_line(free) << " m without");
   CHECK(off_line(on_line) < 0.02);
@@ -327,7 +327,7 @@ TEST_CASE("the windings can be taken around the point nearest the human's grasp"
   CHECK(y[0] > g.descriptor.values[0]);
   TransferOptions options;
   options.winding_reference = WindingReference::nearest_point;
-  const RobotGrasp r = transfer_topological(hammer, g, options);
+  const SdhTransfer r = transfer_topological(hammer, g, options);
   CHECK(r.planned);
   REQUIRE(!r.winding_targets.empty());
   CHECK((r.winding_targets.back() - y).norm() < 1e-12);

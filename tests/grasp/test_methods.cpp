@@ -82,8 +82,8 @@ TEST_CASE("a variant runs the topological planner with its options and says whic
   const HumanGrasp g = demonstrate(hammer, box_hypotheses(hammer)[22], 22);
   REQUIRE(g.stable());
   const TransferOptions options;
-  const RobotGrasp by_name = transfer(TransferMethod::paper, hammer, g, options);
-  const RobotGrasp by_hand =
+  const SdhTransfer by_name = transfer(TransferMethod::paper, hammer, g, options);
+  const SdhTransfer by_hand =
       transfer_topological(hammer, g, transfer_method_options(TransferMethod::paper, options));
   CHECK(by_name.method == TransferMethod::paper);
   CHECK(by_hand.method == TransferMethod::topological);

@@ -96,10 +96,10 @@ TEST_CASE("a run resumed from its journal gives the results.json of the whole ru
     ResultsJournal journal(dir / journal_file_name, config);
     int done = 0;
     const HypothesisDoneFn on_done = [&](const GraspObject& object, const HumanGrasp& g,
-                                         const std::vector<RobotGrasp>& transfers) {
+                                         const std::vector<SdhTransfer>& transfers) {
       if (done == 5) throw std::runtime_error("disk full");
-      std::vector<const RobotGrasp*> ts;
-      for (const RobotGrasp& t : transfers) ts.push_back(&t);
+      std::vector<const SdhTransfer*> ts;
+      for (const SdhTransfer& t : transfers) ts.push_back(&t);
       journal.append({object.name, g.id, hypothesis_records(whole, object, g, ts)});
       ++done;
     };

@@ -23,7 +23,7 @@ const HumanGrasp& hammer_grasp() {
   return g;
 }
 
-void check_not_planned(const RobotGrasp& r, TransferMethod method, const std::string& why) {
+void check_not_planned(const SdhTransfer& r, TransferMethod method, const std::string& why) {
   INFO(r.reason);
   CHECK(r.method == method);
   CHECK_FALSE(r.planned);
@@ -44,21 +44,21 @@ TEST_CASE("a fingertip fit whose cost overflows is not reported as a fingertip t
   const GraspObject hammer = objects::hammer();
   TransferOptions options;
   options.fingertip_scale = 1e300;
-  const RobotGrasp r = transfer_fingertip(hammer, hammer_grasp(), options);
+  const SdhTransfer r = transfer_fingertip(hammer, hammer_grasp(), options);
   check_not_planned(r, TransferMethod::fingertip, "fingertip fit's cost is not finite");
   CHECK_THAT(r.reason, Catch::Contains("1e+300"));
   // Scales whose cost is finite but whose targets are out of the hand's reach: the fit ends
   // with its tips far from them (the free base reaches 10 m), and that is not a fingertip grasp.
   for (const double scale : {1e3, 1e120}) {
     options.fingertip_scale = scale;
-    const RobotGrasp far = transfer_fingertip(hammer, hammer_grasp(), options);
+    const SdhTransfer far = transfer_fingertip(hammer, hammer_grasp(), options);
     INFO("scale " << scale << ": " << far.reason);
     check_not_planned(far, TransferMethod::fingertip, "the fingertip fit");
     CHECK((far.reason.find("did not reach the targets") != std::string::npos ||
            far.reason.find("accepted no step") != std::string::npos));
   }
   // The default scale still plans.
-  const RobotGrasp ok = transfer_fingertip(hammer, hammer_grasp(), TransferOptions{});
+  const SdhTransfer ok = transfer_fingertip(hammer, hammer_grasp(), TransferOptions{});
   CHECK(ok.planned);
 }
 
@@ -85,7 +85,7 @@ TEST_CASE("a human grasp with NaN windings is refused, not planned toward",
   const GraspObject hammer = objects::hammer();
   HumanGrasp g = hammer_grasp();
   g.descriptor.values[0] = std::numeric_limits<double>::quiet_NaN();
-  const RobotGrasp r = transfer_topological(hammer, g, TransferOptions{});
+  const SdhTransfer r = transfer_topological(hammer, g, TransferOptions{});
   check_not_planned(r, TransferMethod::topological, "the human windings are not finite");
 }
 
@@ -102,7 +102,7 @@ TEST_CASE("a fit or a plan that accepted no step is not reported as a transfer",
   // is the ready pose held still: not a topological transfer, whatever ended the plan.
   TransferOptions one_sweep;
   one_sweep.aico.max_sweeps = 1;
-  const RobotGrasp r = transfer_topological(hammer, hammer_grasp(), one_sweep);
+  const SdhTransfer r = transfer_topological(hammer, hammer_grasp(), one_sweep);
   CHECK(std::none_of(r.sweep_log.begin(), r.sweep_log.end(),
                      [](const AicoSweepRecord& s) { return s.accepted; }));
   // It ended on max_sweeps, not on non-finite values, and used to be simulated as the transfer.

@@ -53,7 +53,7 @@ struct AicoAlgorithm {
                            Config& r, double& c) noexcept {
     forward_kinematics(ws.kinematics, q);
     p.stack().residual(ws.kinematics, t, p.steps(), ws.e, ws.J);
-    ++ws.relocations;
+    ++ws.task_evaluations;
     if (!ws.e.allFinite() || !ws.J.allFinite()) return false;
     c = ws.e.squaredNorm();
     R.noalias() = ws.J.transpose() * ws.J;
@@ -268,7 +268,7 @@ struct AicoAlgorithm {
   static bool passes(const Problem& p, Workspace& ws, bool relinearise) noexcept {
     const bool local = p.options().sweep == SweepMode::local_gauss_newton;
     const int times = relinearise && local ? p.options().local_iterations : 0;
-    ws.relocations = 0;
+    ws.task_evaluations = 0;
     ws.non_finite = false;
     ws.factor_failed = false;
     if (!forward_pass(p, ws, local, times)) return false;
@@ -403,7 +403,7 @@ AicoSweepRecord sweep(const AicoProblem<M, Stack, Mode>& problem,
   AicoSweepRecord rec;
   rec.damping = ws.alpha;
   const bool ok = Alg::passes(problem, ws, true);
-  rec.relocations = ws.relocations;
+  rec.task_evaluations = ws.task_evaluations;
   double cost = std::nan("");
   if (ok) {
     cost = Alg::trajectory_cost(problem, ws, ws.candidate());
@@ -422,22 +422,26 @@ AicoSweepRecord sweep(const AicoProblem<M, Stack, Mode>& problem,
   return rec;
 }
 
-/// The message algebra of a sweep alone: the forward and backward passes with their beliefs from
-/// the accepted buffers into the candidate buffers, with no task re-evaluation and no acceptance
-/// step. For benchmarks and tests; false if a factorisation failed. Allocates nothing.
+namespace detail {
+
+// The message algebra of a sweep alone, for the benchmarks and the tests of the passes: the forward
+// and backward passes with their beliefs from the accepted buffers into the candidate buffers, with
+// no task re-evaluation and no acceptance step; false if a factorisation failed. Allocates
+// nothing.
 template <const auto& M, TaskStack Stack, AicoMode Mode>
 bool message_passes(const AicoProblem<M, Stack, Mode>& problem,
                     AicoWorkspace<M, Stack, Mode>& ws) noexcept {
-  return detail::AicoAlgorithm<M, Stack, Mode>::passes(problem, ws, false);
+  return AicoAlgorithm<M, Stack, Mode>::passes(problem, ws, false);
 }
 
-/// The candidate beliefs of the last sweep or message pass (T + 1 states, dim nx), accepted or
-/// not; for tests.
+// The candidate beliefs of the last sweep or message pass (T + 1 states, dim nx), accepted or not.
 template <const auto& M, TaskStack Stack, AicoMode Mode>
 [[nodiscard]] const std::vector<Vec<AicoProblem<M, Stack, Mode>::nx>>& candidate_beliefs(
     AicoWorkspace<M, Stack, Mode>& ws) noexcept {
   return ws.candidate().b;
 }
+
+}  // namespace detail
 
 /// Builds the result from the accepted trajectory of \p ws (allocates).
 template <const auto& M, TaskStack Stack, AicoMode Mode>

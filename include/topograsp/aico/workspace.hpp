@@ -91,7 +91,7 @@ struct AicoWorkspace {
 
   double alpha = 0.0;          ///< current damping
   double cost = 0.0;           ///< true cost of the accepted trajectory
-  int relocations = 0;         ///< task evaluations in the running sweep
+  int task_evaluations = 0;    ///< task evaluations in the running sweep
   bool non_finite = false;     ///< a task turned non-finite in the running sweep
   bool factor_failed = false;  ///< a Cholesky factorisation failed in the running sweep
 

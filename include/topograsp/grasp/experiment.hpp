@@ -87,11 +87,11 @@ struct MethodSummary {
 /// Everything measured on one object.
 struct ObjectResult {
   GraspObject object;
-  int hypotheses = 0;                              ///< hypotheses run (after sharding)
-  std::vector<HumanGrasp> human;                   ///< every demonstration, in id order
-  std::vector<MethodSummary> methods;              ///< in options.methods order
-  std::vector<std::vector<RobotGrasp>> transfers;  ///< [method][k]: the k-th stable human grasp
-  std::vector<int> transferred_ids;                ///< the human grasp id of each k
+  int hypotheses = 0;                               ///< hypotheses run (after sharding)
+  std::vector<HumanGrasp> human;                    ///< every demonstration, in id order
+  std::vector<MethodSummary> methods;               ///< in options.methods order
+  std::vector<std::vector<SdhTransfer>> transfers;  ///< [method][k]: the k-th stable human grasp
+  std::vector<int> transferred_ids;                 ///< the human grasp id of each k
   [[nodiscard]] int stable_human() const noexcept {
     return static_cast<int>(transferred_ids.size());
   }
@@ -110,7 +110,7 @@ struct ObjectResult {
         "m", "expected a method index below " + std::to_string(r.transfers.size()));
   std::vector<bool> out;
   out.reserve(r.transfers[m].size());
-  for (const RobotGrasp& t : r.transfers[m])
+  for (const SdhTransfer& t : r.transfers[m])
     out.push_back(second_judge ? t.planned && t.second && t.second->stable : t.stable());
   return out;
 }
@@ -198,7 +198,7 @@ using ProgressFn = std::function<void(std::string_view)>;
 /// stable). From worker threads, one call at a time, in no fixed order (grasp_transfer journals
 /// each hypothesis so that --resume can skip it). An exception it throws ends the run.
 using HypothesisDoneFn =
-    std::function<void(const GraspObject&, const HumanGrasp&, const std::vector<RobotGrasp>&)>;
+    std::function<void(const GraspObject&, const HumanGrasp&, const std::vector<SdhTransfer>&)>;
 
 namespace detail {
 // run_experiment with the threads started by start_thread (a test seam, see parallel_for).
@@ -326,7 +326,7 @@ std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& o
     results[oi].hypotheses = static_cast<int>(task_of[oi].size());
   }
   std::vector<HumanGrasp> human(tasks.size());
-  std::vector<std::vector<RobotGrasp>> transfers(tasks.size());
+  std::vector<std::vector<SdhTransfer>> transfers(tasks.size());
   std::atomic<int> done{0}, stable_done{0};
   std::string start_error;
   const int ran = detail::parallel_for(
@@ -354,7 +354,7 @@ std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& o
                 "the human hand cannot be placed at the object along its palm's approach "
                 "from the recorded pose; no record");
         }
-        std::vector<RobotGrasp>& t = transfers[static_cast<std::size_t>(k)];
+        std::vector<SdhTransfer>& t = transfers[static_cast<std::size_t>(k)];
         if (g.stable()) {
           for (const TransferMethod m : options.methods)
             t.push_back(transfer(m, object, g, transfer_options));
@@ -387,7 +387,7 @@ std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& o
       MethodSummary summary;
       summary.method = options.methods[m];
       summary.tested = res.stable_human();
-      for (const RobotGrasp& r : res.transfers[m]) summary.stable += r.stable() ? 1 : 0;
+      for (const SdhTransfer& r : res.transfers[m]) summary.stable += r.stable() ? 1 : 0;
       res.methods.push_back(summary);
     }
   }

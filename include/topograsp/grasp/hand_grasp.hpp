@@ -3,8 +3,8 @@
 /// Any hand in a transfer: HandProfile (the frame a hand grasps with, which way it approaches,
 /// which way its joints open), HandTransfer (a transferred grasp of any hand model) and the steps
 /// every transfer method ends with, for any hand model: open until clear of the object, move to
-/// contact, close with the motors and judge with the stability suite. The SDH methods of
-/// transfer.hpp and the any-hand methods of any_hand.hpp both end through these functions.
+/// contact, close with the motors and judge with the stability suite. Every transfer method
+/// (grasp/transfer/) ends through these functions.
 #pragma once
 
 #include <optional>
@@ -173,7 +173,7 @@ template <const auto& M>
 }
 
 /// A grasp of hand \p M transferred from another hand: where the hand ended (object frame), how it
-/// was planned, the stability suite. RobotGrasp (transfer.hpp) is the SDH's.
+/// was planned, the stability suite. SdhTransfer (transfer.hpp) is the SDH's.
 template <const auto& M>
   requires HandModel<decltype(M)>
 struct HandTransfer {

@@ -17,6 +17,7 @@
 #include <topograsp/grasp/hand_grasp.hpp>
 #include <topograsp/grasp/keypoints.hpp>
 #include <topograsp/kinematics/jacobian.hpp>
+#include <topograsp/kinematics/least_squares.hpp>
 
 namespace topograsp {
 
@@ -121,32 +122,23 @@ template <class = void>
   };
   Vec<rows> e;
   double cost = residual(q, e);
-  double lambda = 1e-3;
   KeypointFit fit;
   Mat<rows, n> J;
-  for (int it = 0; it < iterations; ++it) {
-    for (int i = 0; i < keypoint_count; ++i) {
-      const LinkPoint& p = points[static_cast<std::size_t>(i)];
-      J.template middleRows<3>(3 * i) = point_jacobian(d, p.link, world_point(d, p));
-    }
-    const Mat<n, n> H = J.transpose() * J + lambda * Mat<n, n>::Identity();
-    const Vec<n> trial = (q - H.ldlt().solve(J.transpose() * e)).cwiseMax(lo).cwiseMin(hi);
-    Vec<rows> et;
-    const double c = residual(trial, et);
-    ++fit.iterations;
-    if (c < cost) {
-      const bool settled = cost - c < 1e-14;
-      q = trial;
-      e = et;
-      cost = c;
-      lambda = std::max(lambda / 3.0, 1e-9);
-      if (settled) break;
-    } else {
-      lambda *= 10.0;
-      (void)residual(q, e);  // restore the kinematics of q
-      if (lambda > 1e8) break;
-    }
-  }
+  BoundedLeastSquaresOptions lm;
+  lm.iterations = iterations;
+  lm.settled = 1e-14;
+  lm.max_damping = 1e8;
+  const BoundedLeastSquaresResult lmr = bounded_least_squares(
+      q, e, cost, lo, hi, residual,
+      [&](Mat<rows, n>& Jt) {
+        for (int i = 0; i < keypoint_count; ++i) {
+          const LinkPoint& p = points[static_cast<std::size_t>(i)];
+          Jt.template middleRows<3>(3 * i) = point_jacobian(d, p.link, world_point(d, p));
+        }
+      },
+      J, lm);
+  fit.iterations = lmr.iterations;
+  cost = lmr.cost;
   forward_kinematics(d, q);
   fit.grasp.root =
       link_pose(d, models::human_hand_free.find_link(models::human_hand.links[0].spec.name.view()));

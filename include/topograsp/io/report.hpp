@@ -92,7 +92,7 @@ inline std::vector<std::string> write_report(const std::filesystem::path& dir,
         panels.push_back(std::move(p));
       }
       for (std::size_t m = 0; m < r.transfers.size(); ++m) {
-        const RobotGrasp& t = r.transfers[m][k];
+        const SdhTransfer& t = r.transfers[m][k];
         constexpr auto& s = models::schunk_sdh;
         SvgPanel p = detail::grasp_panel(r.object, t.object_pose,
                                          std::string(to_string(t.method)) + "\n" +
@@ -116,7 +116,7 @@ inline std::vector<std::string> write_report(const std::filesystem::path& dir,
       page.figures.push_back({name, r.object.name + ", grasp " + std::to_string(id) +
                                         ": the human demonstration and each transfer"});
       for (std::size_t m = 0; m < r.transfers.size() && !plotted; ++m) {
-        const RobotGrasp& t = r.transfers[m][k];
+        const SdhTransfer& t = r.transfers[m][k];
         if (t.winding_plan.empty()) continue;
         const std::string fig7 =
             "figures/windings_" + file_name_part(r.object.name) + "_" + std::to_string(id) + ".svg";

@@ -337,7 +337,7 @@ inline void check_scene_names(const ExperimentOptions& options) {
 /// results_document sorts into.
 [[nodiscard]] inline std::vector<Json> hypothesis_records(
     const ExperimentOptions& options, const GraspObject& object, const HumanGrasp& g,
-    const std::vector<const RobotGrasp*>& transfers) {
+    const std::vector<const SdhTransfer*>& transfers) {
   std::vector<Json> out;
   if (!g.reached) return out;
   const std::string& second_name = options.transfer.sim.second_judge_name;
@@ -367,8 +367,8 @@ inline void check_scene_names(const ExperimentOptions& options) {
   detail::set_stability(rec, &g.stability);
   detail::set_second_and_quality(rec, g.second, &g.quality, second_name);
   out.push_back(std::move(rec));
-  for (const RobotGrasp* tp : transfers) {
-    const RobotGrasp& t = *tp;
+  for (const SdhTransfer* tp : transfers) {
+    const SdhTransfer& t = *tp;
     Json r = Json::object();
     r.set("object", object.name);
     r.set("id", g.id);
@@ -520,9 +520,9 @@ struct ObjectRecords {
     ObjectRecords o{r.object.name, r.hypotheses, {}};
     for (const HumanGrasp& g : r.human) {
       const auto k = std::find(r.transferred_ids.begin(), r.transferred_ids.end(), g.id);
-      std::vector<const RobotGrasp*> transfers;
+      std::vector<const SdhTransfer*> transfers;
       if (k != r.transferred_ids.end())
-        for (const std::vector<RobotGrasp>& ts : r.transfers)
+        for (const std::vector<SdhTransfer>& ts : r.transfers)
           transfers.push_back(&ts[static_cast<std::size_t>(k - r.transferred_ids.begin())]);
       for (Json& rec : hypothesis_records(options, r.object, g, transfers))
         o.grasps.push_back(std::move(rec));

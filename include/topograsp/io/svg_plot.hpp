@@ -90,7 +90,6 @@ class SvgLinePlot {
     log_y_ = on;
   }
   [[nodiscard]] bool log_y() const noexcept { return log_y_; }
-  [[nodiscard]] std::size_t series_count() const noexcept { return series_.size(); }
 
   /// The colour of the \p k-th unstyled series: the palette #1f77b4, #d62728, #2ca02c, #ff7f0e,
   /// #9467bd, #8c564b, #17becf, cycling (the colours of the hand curves in SvgScene).

@@ -120,12 +120,6 @@ struct Model {
       if (frames[i].spec.name.view() == n) return static_cast<int>(i);
     return -1;
   }
-  /// Index of the finger named \p n, or -1.
-  [[nodiscard]] constexpr int find_finger(std::string_view n) const noexcept {
-    for (std::size_t i = 0; i < NH; ++i)
-      if (fingers[i].spec.name.view() == n) return static_cast<int>(i);
-    return -1;
-  }
   /// Index of the configuration entry of the joint named \p n, or -1 (fixed, mimic or unknown).
   [[nodiscard]] constexpr int find_joint(std::string_view n) const noexcept {
     const int l = find_link(n);

@@ -24,16 +24,4 @@ inline void add_point_gradient(const KinematicsData<M>& d, int link, const Vec3&
   }
 }
 
-/// Adds \p g' * (d omega / d q) to the 1 x nq row \p row_, where omega is the angular velocity of
-/// link \p link in the world frame: the chain rule for a vector v fixed to the link, whose rate is
-/// omega x v, with g = v x (gradient with respect to v).
-template <const auto& M, class Derived>
-inline void add_rotation_gradient(const KinematicsData<M>& d, int link, const Vec3& g,
-                                  Eigen::MatrixBase<Derived> const& row_) noexcept {
-  auto& row = const_cast<Eigen::MatrixBase<Derived>&>(row_);
-  for (const SupportJoint& j : M.support(link))
-    if (j.type == JointType::revolute)
-      row(0, j.q) += j.multiplier * g.dot(d.axis[static_cast<std::size_t>(j.link)]);
-}
-
 }  // namespace topograsp::detail
