@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The transfer matrix's one step: a source grasp transferred to one target hand by each method,
-// each result judged and kept as a Record. transfer_pair is compiled once per target hand, each in
-// its own translation unit (sdh.cpp, barrett.cpp, allegro.cpp, leap.cpp, shadow.cpp), so that a
-// build spreads the matrix over its cores; main.cpp only declares it.
+// each result judged and kept as a Record. transfer_pair is instantiated for each target hand in
+// a file of its own (sdh.cpp, barrett.cpp, allegro.cpp, leap.cpp, shadow.cpp); main.cpp only
+// declares it. The build compiles the six files as one translation unit (examples/CMakeLists.txt).
 #pragma once
 
 #include <limits>

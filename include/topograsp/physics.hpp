@@ -8,7 +8,6 @@
 #include <topograsp/physics/contact.hpp>
 #include <topograsp/physics/contact_set.hpp>
 #include <topograsp/physics/contact_solver.hpp>
-#include <topograsp/physics/mass_properties.hpp>
 #include <topograsp/physics/narrow_phase.hpp>
 #include <topograsp/physics/polytope.hpp>
 #include <topograsp/physics/rigid_body.hpp>

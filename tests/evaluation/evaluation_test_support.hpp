@@ -43,7 +43,7 @@ inline HandScene<models::schunk_sdh> sdh_bottle_scene(double friction = 1.0,
   const Eigen::Isometry3d hand = sdh_side_pose();
   HandSceneOptions so;
   so.friction = friction;
-  so.stepper.hand_stiffness = pad_stiffness;
+  so.stepper.kinematic_stiffness = pad_stiffness;
   Vec<7> q;
   q << 0.0, -0.6, 0.3, -0.6, 0.3, -0.6, 0.3;
   return HandScene<models::schunk_sdh>(

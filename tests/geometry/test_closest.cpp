@@ -119,7 +119,7 @@ TEST_CASE("zero-length segments are points", "[geometry][closest]") {
 }
 
 TEST_CASE("the kernel runs in float", "[geometry][closest]") {
-  using V = detail::V3<float>;
+  using V = Vec<3, float>;
   float s = -1.0f, t = -1.0f;
   detail::closest_segment_params<float>(V(0, 0, 0), V(2, 0, 0), V(1, 1, 0), V(3, 1, 0), s, t);
   CHECK(s == Approx(0.75f));

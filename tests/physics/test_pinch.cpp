@@ -72,7 +72,7 @@ double measured_force() {
 
 TEST_CASE("the squeeze force is the hand stiffness times the overlap", "[physics][oracle][pinch]") {
   const double F = measured_force();
-  CHECK(F == Approx(StepperOptions{}.hand_stiffness * overlap).epsilon(0.02));
+  CHECK(F == Approx(StepperOptions{}.kinematic_stiffness * overlap).epsilon(0.02));
 }
 
 TEST_CASE("a pinch holds a box iff 2 mu F >= m g", "[physics][oracle][pinch]") {

@@ -8,13 +8,14 @@
 
 namespace topograsp {
 
-/// Column vector of fixed size \p N (Eigen::Dynamic for a run-time size).
-template <int N>
-using Vec = Eigen::Matrix<double, N, 1>;
+/// Column vector of fixed size \p N (Eigen::Dynamic for a run-time size) over the scalar \p S
+/// (the stepper and the narrow phase are templates over it; everything else is double).
+template <int N, class S = double>
+using Vec = Eigen::Matrix<S, N, 1>;
 
-/// Matrix of fixed size \p R x \p C.
-template <int R, int C>
-using Mat = Eigen::Matrix<double, R, C>;
+/// Matrix of fixed size \p R x \p C over the scalar \p S.
+template <int R, int C, class S = double>
+using Mat = Eigen::Matrix<S, R, C>;
 
 using Vec2 = Vec<2>;
 using Vec3 = Vec<3>;

@@ -143,4 +143,26 @@ constexpr Pose Pose::quat(double w, double x, double y, double z) const noexcept
   return out;
 }
 
+/// Whether \p R is a rotation: orthonormal to \p tolerance (R' R is approximately the identity,
+/// Eigen's isApprox) with a determinant that is not negative. False for any NaN.
+[[nodiscard]] inline bool is_rotation(const Mat3& R, double tolerance = 1e-6) noexcept {
+  return (R.transpose() * R).isApprox(Mat3::Identity(), tolerance) && !(R.determinant() < 0.0);
+}
+
+namespace detail {
+
+/// The rotation of a Pose converted to the scalar type S.
+template <class S>
+[[nodiscard]] Mat<3, 3, S> rotation_of(const Pose& p) noexcept {
+  return p.rotation().template cast<S>();
+}
+
+/// The translation of a Pose converted to the scalar type S.
+template <class S>
+[[nodiscard]] Vec<3, S> translation_of(const Pose& p) noexcept {
+  return p.translation().template cast<S>();
+}
+
+}  // namespace detail
+
 }  // namespace topograsp

@@ -218,7 +218,7 @@ CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options
   scene.set_effort_fraction(options.hold_fraction);
   scene.set_joint_targets(closed_targets<M>(q));
   World<S>& w = scene.world();
-  const detail::V3<S> gravity = w.gravity();
+  const Vec<3, S> gravity = w.gravity();
   w.set_gravity(Eigen::Vector3d::Zero());
   for (int k = 0; k < options.closing_steps && result.status == Status::success; ++k)
     result.status = scene.step();

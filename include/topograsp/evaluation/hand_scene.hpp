@@ -15,9 +15,9 @@
 #include <vector>
 
 #include <topograsp/evaluation/grasp_wrench.hpp>
+#include <topograsp/geometry/mass_properties.hpp>
 #include <topograsp/kinematics/data.hpp>
 #include <topograsp/kinematics/forward.hpp>
-#include <topograsp/physics/mass_properties.hpp>
 #include <topograsp/physics/world.hpp>
 
 namespace topograsp {
@@ -44,12 +44,12 @@ struct ObjectSpec {
 struct HandSceneOptions {
   /// Time step, contact stiffness, ...: StepperOptions defaults but 4 solver iterations (light
   /// finger joints on a heavy object converge poorly in one, StepperOptions::iterations) and
-  /// finger pads of 8000 N/m (hand_stiffness: firm rubber pads, 8 N per mm, so that a finger
+  /// finger pads of 8000 N/m (kinematic_stiffness: firm rubber pads, 8 N per mm, so that a finger
   /// pressing with 10 to 20 N gives 1 to 3 mm).
   StepperOptions stepper = [] {
     StepperOptions o;
     o.iterations = 4;
-    o.hand_stiffness = 8000.0;
+    o.kinematic_stiffness = 8000.0;
     return o;
   }();
   /// Coulomb friction coefficient between the hand and the object. Default 1 (rubber-covered
@@ -414,8 +414,7 @@ class HandScene {
   [[nodiscard]] static std::string hand_pose_problem(const Eigen::Isometry3d& pose) {
     if (!pose.matrix().allFinite()) return "expected a finite number";
     const Mat3 R = pose.linear();
-    if (!(R.transpose() * R).isApprox(Mat3::Identity(), 1e-6) || R.determinant() < 0.0)
-      return "expected a rotation (orthonormal, det +1)";
+    if (!is_rotation(R)) return "expected a rotation (orthonormal, det +1)";
     const double m = pose.translation().cwiseAbs().maxCoeff();
     if (!(m <= k_max_hand_coordinate)) {
       char buf[96];

@@ -18,7 +18,7 @@
 
 #include <topograsp/core/eigen.hpp>
 #include <topograsp/core/error.hpp>
-#include <topograsp/physics/mass_properties.hpp>
+#include <topograsp/geometry/mass_properties.hpp>
 
 namespace topograsp {
 

@@ -15,6 +15,28 @@
 
 namespace topograsp {
 
+namespace detail {
+
+/// The radius of the smallest sphere about a shape's centre that holds the shape of \p type and
+/// \p size (ShapeSpec::size): a sphere's radius, a capsule's radius plus half length, a box's
+/// half diagonal, a cylinder's sqrt(r^2 + l^2).
+template <class S>
+[[nodiscard]] S bounding_radius(ShapeType type, const Vec<3, S>& size) noexcept {
+  switch (type) {
+    case ShapeType::sphere:
+      return size[0];
+    case ShapeType::capsule:
+      return size[0] + size[1];
+    case ShapeType::box:
+      return size.norm();
+    case ShapeType::cylinder:
+      return std::sqrt(size[0] * size[0] + size[1] * size[1]);
+  }
+  return size.norm();
+}
+
+}  // namespace detail
+
 /// A convex shape with a world pose. Every shape is centred at \c p; capsules and cylinders run
 /// along the third column of \c R (their local z axis).
 ///
@@ -28,9 +50,9 @@ namespace topograsp {
 template <class S>
 struct BasicPrimitive {
   ShapeType type = ShapeType::sphere;
-  detail::M3<S> R = detail::M3<S>::Identity();  ///< orientation: local to world
-  detail::V3<S> p = detail::V3<S>::Zero();      ///< centre (m)
-  detail::V3<S> size = detail::V3<S>::Zero();   ///< see above (m)
+  Mat<3, 3, S> R = Mat<3, 3, S>::Identity();  ///< orientation: local to world
+  Vec<3, S> p = Vec<3, S>::Zero();            ///< centre (m)
+  Vec<3, S> size = Vec<3, S>::Zero();         ///< see above (m)
 
   /// A sphere of \p radius at \p centre.
   /// \throws topograsp::invalid_argument naming "centre" or "radius".
@@ -97,23 +119,13 @@ struct BasicPrimitive {
     s.type = spec.type;
     s.R.noalias() = R_link * spec.pose.rotation();
     s.p.noalias() = p_link + R_link * spec.pose.translation();
-    s.size = detail::V3<S>(spec.size[0], spec.size[1], spec.size[2]);
+    s.size = Vec<3, S>(spec.size[0], spec.size[1], spec.size[2]);
     return s;
   }
 
   /// The radius of the smallest sphere about \c p that holds the shape (m).
   [[nodiscard]] S bounding_radius() const noexcept {
-    switch (type) {
-      case ShapeType::sphere:
-        return size[0];
-      case ShapeType::capsule:
-        return size[0] + size[1];
-      case ShapeType::box:
-        return size.norm();
-      case ShapeType::cylinder:
-        return std::hypot(size[0], size[1]);
-    }
-    return size.norm();
+    return detail::bounding_radius<S>(type, size);
   }
 
   /// The volume (m^3).
@@ -154,9 +166,9 @@ namespace detail {
 /// The core segment (a0, a1) of a sphere (a0 = a1 = its centre) or capsule (along the third
 /// column of R).
 template <class S>
-void core_segment(const BasicPrimitive<S>& v, V3<S>& a0, V3<S>& a1) noexcept {
+void core_segment(const BasicPrimitive<S>& v, Vec<3, S>& a0, Vec<3, S>& a1) noexcept {
   if (v.type == ShapeType::capsule) {
-    const V3<S> h = v.R.col(2) * v.size[1];
+    const Vec<3, S> h = v.R.col(2) * v.size[1];
     a0 = v.p - h;
     a1 = v.p + h;
   } else {

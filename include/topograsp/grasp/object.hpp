@@ -13,8 +13,8 @@
 
 #include <topograsp/core/error.hpp>
 #include <topograsp/geometry/composite.hpp>
+#include <topograsp/geometry/mass_properties.hpp>
 #include <topograsp/model/spec.hpp>
-#include <topograsp/physics/mass_properties.hpp>
 
 namespace topograsp {
 

@@ -46,10 +46,10 @@
 
 #include <topograsp/core/constants.hpp>
 #include <topograsp/core/error.hpp>
+#include <topograsp/geometry/mass_properties.hpp>
 #include <topograsp/io/mesh_file.hpp>
 #include <topograsp/io/xml.hpp>
 #include <topograsp/model/spec.hpp>
-#include <topograsp/physics/mass_properties.hpp>
 
 namespace topograsp {
 

@@ -47,8 +47,8 @@ struct MjcfOptions {
   /// The time constant (s) of every hand-object contact (the pair's solref, damping ratio 1).
   /// MuJoCo's contact is a spring whose stiffness scales with the effective mass m as about
   /// m / timeconst^2: 0.01 s gives a 0.6 kg object about 6000 N/m, near the built-in finger pads'
-  /// 8000 N/m (StepperOptions::hand_stiffness), where MuJoCo's default 0.02 s gives 1500 N/m and
-  /// lets a held object turn in the grip several times as far. At least 2 time steps, as MuJoCo
+  /// 8000 N/m (StepperOptions::kinematic_stiffness), where MuJoCo's default 0.02 s gives 1500 N/m
+  /// and lets a held object turn in the grip several times as far. At least 2 time steps, as MuJoCo
   /// asks (0.01 s is 5 of the 1.85 ms steps). Default 0.01.
   double contact_timeconst = 0.01;
   /// The time constant (s) of the weld that makes the hand's base follow the mocap body `hand`
@@ -189,7 +189,7 @@ inline void write_mjcf_geom(std::ostream& os, std::string_view indent, const std
 /// the Euler integrator. Each geom carries its body's friction coefficient mu and, with
 /// torsional friction (condim 4), mu * torsional_friction_radius: MuJoCo takes the larger value
 /// of a pair where topograsp takes sqrt(mu_a mu_b), the same when both bodies have the same mu.
-/// MuJoCo's contacts use its own softness (solref, solimp defaults), not hand_stiffness.
+/// MuJoCo's contacts use its own softness (solref, solimp defaults), not kinematic_stiffness.
 template <class S>
 void write_mjcf(std::ostream& os, const World<S>& world, const Eigen::Isometry3d& hand_frame,
                 std::string_view model_name = "topograsp_scene") {

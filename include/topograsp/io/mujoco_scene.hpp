@@ -209,7 +209,7 @@ class MujocoScene {
     if (!pose.matrix().allFinite())
       detail::throw_invalid_argument("pose", "expected a finite number");
     const Mat3 R = pose.linear();
-    if (!(R.transpose() * R).isApprox(Mat3::Identity(), 1e-6) || R.determinant() < 0.0)
+    if (!is_rotation(R))
       detail::throw_invalid_argument("pose", "expected a rotation (orthonormal, det +1)");
     hand_pose_ = pose;
   }

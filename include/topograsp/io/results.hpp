@@ -314,7 +314,7 @@ inline void check_scene_names(const ExperimentOptions& options) {
   }
   // 0: each pair from the table of materials (docs/objects.md); else --friction's coefficient.
   cfg.set("friction", options.transfer.sim.friction);
-  cfg.set("hand_stiffness", options.transfer.sim.scene.stepper.hand_stiffness);
+  cfg.set("hand_stiffness", options.transfer.sim.scene.stepper.kinematic_stiffness);
   cfg.set("hold_fraction", options.transfer.sim.close.hold_fraction);
   cfg.set("human_hold_fraction", options.transfer.sim.human_hold_fraction);
   cfg.set("judge", std::string(to_string(options.judge)));

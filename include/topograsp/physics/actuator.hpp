@@ -74,19 +74,20 @@ template <class S>
 struct BodyJoints {
   int count = 0;
   std::array<int, k_max_body_joints> actuator{};
-  std::array<V3<S>, k_max_body_joints> axis{}, origin{};
+  std::array<Vec<3, S>, k_max_body_joints> axis{}, origin{};
   std::array<S, k_max_body_joints> gear{};
   std::array<bool, k_max_body_joints> prismatic{};
 
   /// The velocity of the body's point \p p per unit velocity of joint j's actuator.
-  [[nodiscard]] V3<S> lever(int j, const V3<S>& p) const noexcept {
+  [[nodiscard]] Vec<3, S> lever(int j, const Vec<3, S>& p) const noexcept {
     const auto u = static_cast<std::size_t>(j);
-    return prismatic[u] ? V3<S>(gear[u] * axis[u]) : V3<S>(gear[u] * axis[u].cross(p - origin[u]));
+    return prismatic[u] ? Vec<3, S>(gear[u] * axis[u])
+                        : Vec<3, S>(gear[u] * axis[u].cross(p - origin[u]));
   }
   /// The angular velocity of the body per unit velocity of joint j's actuator.
-  [[nodiscard]] V3<S> spin(int j) const noexcept {
+  [[nodiscard]] Vec<3, S> spin(int j) const noexcept {
     const auto u = static_cast<std::size_t>(j);
-    return prismatic[u] ? V3<S>::Zero() : V3<S>(gear[u] * axis[u]);
+    return prismatic[u] ? Vec<3, S>::Zero() : Vec<3, S>(gear[u] * axis[u]);
   }
 };
 
@@ -111,8 +112,8 @@ template <class S>
 /// Applies the impulse \p P (N s, world), received at point \p p of the body that \p joints
 /// carry, to its actuators: qd += inv_inertia * lever . P.
 template <class S>
-void push_joints(const BodyJoints<S>& joints, std::span<Actuator<S>> act, const V3<S>& p,
-                 const V3<S>& P) noexcept {
+void push_joints(const BodyJoints<S>& joints, std::span<Actuator<S>> act, const Vec<3, S>& p,
+                 const Vec<3, S>& P) noexcept {
   for (int j = 0; j < joints.count; ++j) {
     Actuator<S>& a = act[static_cast<std::size_t>(joints.actuator[static_cast<std::size_t>(j)])];
     a.qd += a.inv_inertia * joints.lever(j, p).dot(P);
@@ -122,7 +123,7 @@ void push_joints(const BodyJoints<S>& joints, std::span<Actuator<S>> act, const 
 /// Applies the angular impulse \p L (N m s, world) received by the body to its actuators.
 template <class S>
 void twist_joints(const BodyJoints<S>& joints, std::span<Actuator<S>> act,
-                  const V3<S>& L) noexcept {
+                  const Vec<3, S>& L) noexcept {
   for (int j = 0; j < joints.count; ++j) {
     Actuator<S>& a = act[static_cast<std::size_t>(joints.actuator[static_cast<std::size_t>(j)])];
     a.qd += a.inv_inertia * joints.spin(j).dot(L);
@@ -131,9 +132,10 @@ void twist_joints(const BodyJoints<S>& joints, std::span<Actuator<S>> act,
 
 /// The velocity of point \p p of the body due to its joints (world, m/s).
 template <class S>
-[[nodiscard]] V3<S> joint_velocity(const BodyJoints<S>& joints, std::span<const Actuator<S>> act,
-                                   const V3<S>& p) noexcept {
-  V3<S> v = V3<S>::Zero();
+[[nodiscard]] Vec<3, S> joint_velocity(const BodyJoints<S>& joints,
+                                       std::span<const Actuator<S>> act,
+                                       const Vec<3, S>& p) noexcept {
+  Vec<3, S> v = Vec<3, S>::Zero();
   for (int j = 0; j < joints.count; ++j)
     v += joints.lever(j, p) *
          act[static_cast<std::size_t>(joints.actuator[static_cast<std::size_t>(j)])].qd;
@@ -142,9 +144,10 @@ template <class S>
 
 /// The displacement of point \p p of the body due to its joints since the step began (m).
 template <class S>
-[[nodiscard]] V3<S> joint_displacement(const BodyJoints<S>& joints,
-                                       std::span<const Actuator<S>> act, const V3<S>& p) noexcept {
-  V3<S> d = V3<S>::Zero();
+[[nodiscard]] Vec<3, S> joint_displacement(const BodyJoints<S>& joints,
+                                           std::span<const Actuator<S>> act,
+                                           const Vec<3, S>& p) noexcept {
+  Vec<3, S> d = Vec<3, S>::Zero();
   for (int j = 0; j < joints.count; ++j) {
     const Actuator<S>& a =
         act[static_cast<std::size_t>(joints.actuator[static_cast<std::size_t>(j)])];
@@ -155,14 +158,19 @@ template <class S>
 
 /// The angular velocity of the body due to its joints (world, rad/s).
 template <class S>
-[[nodiscard]] V3<S> joint_spin(const BodyJoints<S>& joints,
-                               std::span<const Actuator<S>> act) noexcept {
-  V3<S> w = V3<S>::Zero();
+[[nodiscard]] Vec<3, S> joint_spin(const BodyJoints<S>& joints,
+                                   std::span<const Actuator<S>> act) noexcept {
+  Vec<3, S> w = Vec<3, S>::Zero();
   for (int j = 0; j < joints.count; ++j)
     w += joints.spin(j) *
          act[static_cast<std::size_t>(joints.actuator[static_cast<std::size_t>(j)])].qd;
   return w;
 }
+
+/// Which of a sub-step's two solves of the actuator and contact rows: with the position bias that
+/// pushes overlaps apart and joints back within their limits (before positions are integrated),
+/// or without it (the relax pass after).
+enum class SolvePass : bool { biased, relax };
 
 /// Every sub-step, before the contacts: applies the warm-started motor and limit impulses.
 template <class S>
@@ -179,7 +187,8 @@ void warm_start_actuators(std::span<Actuator<S>> act) noexcept {
 /// sub-step (at most max_push). A soft limit, as rigid contacts are (their stiffness scaled by
 /// the effective mass), would let a strong servo on a light joint press far past it.
 template <class S>
-void solve_actuators(std::span<Actuator<S>> act, S h, bool use_bias, S max_push) noexcept {
+void solve_actuators(std::span<Actuator<S>> act, S h, SolvePass pass, S max_push) noexcept {
+  const bool use_bias = pass == SolvePass::biased;
   constexpr S k_limit_baumgarte = S(0.2);
   const S inv_h = S(1) / h;
   for (Actuator<S>& a : act) {

@@ -16,7 +16,7 @@ namespace topograsp {
 /// One contact point and its solver state.
 template <class S = double>
 struct ContactPoint {
-  using V3 = detail::V3<S>;
+  using V3 = Vec<3, S>;
   V3 point = V3::Zero();    ///< world point midway between the surfaces at the step's start (m)
   V3 normal = V3::UnitZ();  ///< unit, from body A into body B
   S separation = S(0);      ///< at the step's start (m); negative when overlapping
@@ -49,15 +49,15 @@ struct Manifold {
   int collider_a = -1, collider_b = -1;  ///< shape indices in the World
   int count = 0;                         ///< points in use
   std::array<ContactPoint<S>, 4> points{};
-  S friction = S(0);  ///< the pair's Coulomb coefficient
-  bool hand = false;  ///< one body is kinematic: physical stiffness, torsional friction
+  S friction = S(0);       ///< the pair's Coulomb coefficient
+  bool kinematic = false;  ///< one body is kinematic: physical stiffness, torsional friction
   /// Which body joint-space actuators carry (World::set_body_joints()): -1 body A, +1 body B,
   /// 0 neither; set each step by prepare_contacts().
   int articulated = 0;
-  detail::V3<S> twist_axis = detail::V3<S>::UnitZ();
+  Vec<3, S> twist_axis = Vec<3, S>::UnitZ();
   S twist_mass = S(0);     ///< 0 when the pair has no torsional friction this step
   S twist_impulse = S(0);  ///< accumulated torsional impulse (N m s)
-  detail::V3<S> twist_axis_now = detail::V3<S>::UnitZ();  ///< turned with A
+  Vec<3, S> twist_axis_now = Vec<3, S>::UnitZ();  ///< turned with A
 };
 
 /// Replaces the points of \p m by the narrow phase's \p found, each starting from the impulses of
@@ -69,7 +69,7 @@ void match_contacts(Manifold<S>& m, const ContactSet<S>& found) noexcept {
   const int old_count = m.count;
   std::array<std::uint32_t, 4> old_id{};
   std::array<S, 4> old_normal{};
-  std::array<detail::V3<S>, 4> old_friction{};
+  std::array<Vec<3, S>, 4> old_friction{};
   for (int k = 0; k < old_count; ++k) {
     const auto u = static_cast<std::size_t>(k);
     old_id[u] = m.points[u].id;

@@ -16,8 +16,8 @@ namespace topograsp {
 /// One contact point found by the narrow phase, in the world frame.
 template <class S = double>
 struct ContactFeature {
-  detail::V3<S> point;   ///< midway between the two surfaces (m)
-  detail::V3<S> normal;  ///< unit, pointing from shape A into shape B
+  Vec<3, S> point;       ///< midway between the two surfaces (m)
+  Vec<3, S> normal;      ///< unit, pointing from shape A into shape B
   S separation = S(0);   ///< gap along the normal (m); negative when overlapping
   std::uint32_t id = 0;  ///< feature id, stable while the touching features stay the same
 };
@@ -27,7 +27,7 @@ template <class S = double>
 struct ContactSet {
   int count = 0;
   std::array<ContactFeature<S>, 4> points{};
-  void add(const detail::V3<S>& point, const detail::V3<S>& normal, S separation,
+  void add(const Vec<3, S>& point, const Vec<3, S>& normal, S separation,
            std::uint32_t id) noexcept {
     if (count < 4) points[static_cast<std::size_t>(count++)] = {point, normal, separation, id};
   }

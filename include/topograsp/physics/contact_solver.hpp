@@ -2,10 +2,11 @@
 /// \file
 /// The contact solver in stages, as Box2D v3 splits its solver: prepare_contacts() once a step,
 /// then every sub-step warm_start_contacts(), solve_contacts() with the soft bias, (positions
-/// integrated by World) and solve_contacts() without it (relax), accumulate_impulses(); at the
-/// end of the step store_impulses(). Free functions over the manifolds and bodies of a World;
-/// World::step() sequences them. None allocates. Internal (topograsp::detail): the manifolds and
-/// bodies they take are the World's own, whose invariants TOPOGRASP_ASSERT checks.
+/// integrated, physics/detail/step.hpp) and solve_contacts() without it (relax),
+/// accumulate_impulses(); at the end of the step store_impulses(). Free functions over the
+/// manifolds of a World and its step context (StepContext); World::step() sequences them. None
+/// allocates. Internal (topograsp::detail): the manifolds and bodies they take are the World's own,
+/// whose invariants TOPOGRASP_ASSERT checks.
 #pragma once
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include <topograsp/geometry/detail/closest.hpp>
 #include <topograsp/physics/actuator.hpp>
 #include <topograsp/physics/contact.hpp>
+#include <topograsp/physics/detail/step.hpp>
 #include <topograsp/physics/rigid_body.hpp>
 #include <topograsp/physics/stepper_options.hpp>
 
@@ -28,13 +30,15 @@ namespace topograsp::detail {
 /// each point (rigid soft contact, b2MakeSoft, or the hand's physical spring-damper) and the
 /// torsional friction row; friction impulses carried from the last step are projected onto the
 /// new tangent basis (warm starting).
-/// \param[in] h the sub-step (s).
 template <class S>
-void prepare_contacts(std::span<Manifold<S>> manifolds, std::span<const RigidBody<S>> bodies,
-                      std::span<const BodyJoints<S>> joints, std::span<const Actuator<S>> act,
-                      const StepperOptions& options, S h) noexcept {
-  using V3 = detail::V3<S>;
-  using M3 = detail::M3<S>;
+void prepare_contacts(std::span<Manifold<S>> manifolds, const StepContext<S>& ctx) noexcept {
+  const std::span<const RigidBody<S>> bodies = ctx.bodies;
+  const std::span<const BodyJoints<S>> joints = ctx.joints;
+  const std::span<const Actuator<S>> act = ctx.actuators;
+  const StepperOptions& options = ctx.options;
+  const S h = ctx.h;
+  using V3 = Vec<3, S>;
+  using M3 = Mat<3, 3, S>;
   // Rigid soft contacts: b2MakeSoft. With omega = 2 pi f: a1 = 2 zeta + h omega,
   // a2 = h omega a1, a3 = 1 / (1 + a2); bias rate omega / a1, mass scale a2 a3, impulse scale a3.
   const S pi_s = static_cast<S>(pi);
@@ -42,8 +46,8 @@ void prepare_contacts(std::span<Manifold<S>> manifolds, std::span<const RigidBod
   const S omega = S(2) * pi_s * hertz, zeta = static_cast<S>(options.contact_damping_ratio);
   const S a1 = S(2) * zeta + h * omega, a2 = h * omega * a1, a3 = S(1) / (S(1) + a2);
   const S rigid_bias = omega / a1, rigid_mass = a2 * a3, rigid_impulse = a3;
-  const S k_hand = static_cast<S>(options.hand_stiffness);
-  const S zeta_hand = static_cast<S>(options.hand_damping_ratio);
+  const S k_kinematic = static_cast<S>(options.kinematic_stiffness);
+  const S zeta_kinematic = static_cast<S>(options.kinematic_damping_ratio);
   const S torsion = static_cast<S>(options.torsional_friction_radius);
   for (Manifold<S>& m : manifolds) {
     if (m.count == 0) continue;
@@ -107,18 +111,18 @@ void prepare_contacts(std::span<Manifold<S>> manifolds, std::span<const RigidBod
       c.n_now = n;
       c.t1_now = c.t1;
       c.t2_now = c.t2;
-      if (m.hand && k_hand > S(0)) {
+      if (m.kinematic && k_kinematic > S(0)) {
         // Physical spring-damper (Catto, "Soft constraints", GDC 2011): with stiffness k and
         // damping c = 2 zeta sqrt(k m_eff), gamma = 1 / (h (c + h k)) and bias rate
         // k / (c + h k); at rest the accumulated impulse per sub-step is k d h, a force k d.
-        const S kp = k_hand / static_cast<S>(m.count);
+        const S kp = k_kinematic / static_cast<S>(m.count);
         const S meff = c.normal_mass;
-        const S damping = S(2) * zeta_hand * std::sqrt(kp * meff);
+        const S damping = S(2) * zeta_kinematic * std::sqrt(kp * meff);
         const S gamma = S(1) / (h * (damping + h * kp));
         c.bias_rate = kp / (damping + h * kp);
         c.mass_scale = S(1) / (S(1) + meff * gamma);
         c.impulse_scale = meff * gamma * c.mass_scale;
-        c.max_push = static_cast<S>(options.hand_push_max_speed);
+        c.max_push = static_cast<S>(options.kinematic_push_max_speed);
       } else {
         c.bias_rate = rigid_bias;
         c.mass_scale = rigid_mass;
@@ -127,7 +131,7 @@ void prepare_contacts(std::span<Manifold<S>> manifolds, std::span<const RigidBod
       }
     }
     m.twist_mass = S(0);
-    if (m.hand && torsion > S(0) && axis.squaredNorm() > S(1e-12)) {
+    if (m.kinematic && torsion > S(0) && axis.squaredNorm() > S(1e-12)) {
       m.twist_axis = axis.normalized();
       m.twist_axis_now = m.twist_axis;
       S kt = m.twist_axis.dot(iA * m.twist_axis) + m.twist_axis.dot(iB * m.twist_axis);
@@ -146,7 +150,7 @@ void prepare_contacts(std::span<Manifold<S>> manifolds, std::span<const RigidBod
 /// Applies the impulse \p impulse (N s, world) at the offset \p r from the centre of mass of \p b;
 /// only dynamic bodies move.
 template <class S>
-void apply_impulse(RigidBody<S>& b, const detail::V3<S>& impulse, const detail::V3<S>& r) noexcept {
+void apply_impulse(RigidBody<S>& b, const Vec<3, S>& impulse, const Vec<3, S>& r) noexcept {
   if (b.type != BodyType::dynamic) return;
   b.v += b.inv_mass * impulse;
   b.w += b.inv_inertia * r.cross(impulse);
@@ -155,10 +159,11 @@ void apply_impulse(RigidBody<S>& b, const detail::V3<S>& impulse, const detail::
 /// Stage 2, every sub-step: applies the accumulated impulses of every point (normal and friction
 /// along the turned frame) and of the torsional row.
 template <class S>
-void warm_start_contacts(std::span<Manifold<S>> manifolds, std::span<RigidBody<S>> bodies,
-                         std::span<const BodyJoints<S>> joints,
-                         std::span<Actuator<S>> act) noexcept {
-  using V3 = detail::V3<S>;
+void warm_start_contacts(std::span<Manifold<S>> manifolds, const StepContext<S>& ctx) noexcept {
+  const std::span<RigidBody<S>> bodies = ctx.bodies;
+  const std::span<const BodyJoints<S>> joints = ctx.joints;
+  const std::span<Actuator<S>> act = ctx.actuators;
+  using V3 = Vec<3, S>;
   for (Manifold<S>& m : manifolds) {
     if (m.count == 0) continue;
     RigidBody<S>& A = bodies[static_cast<std::size_t>(m.body_a)];
@@ -186,19 +191,20 @@ void warm_start_contacts(std::span<Manifold<S>> manifolds, std::span<RigidBody<S
 /// Stage 3, twice every sub-step (with the soft position bias before integrating positions, without
 /// it after, the "relax" pass): sequential impulses on every manifold, normal rows first, then
 /// friction in a circular cone, then torsional friction.
-/// \param[in] turned the rotation of each body since the step began (one per body); the contact
-///            frame turns with body A, the anchors with their bodies.
-/// \param[in] h the sub-step (s).
-/// \param[in] use_bias whether overlaps are pushed apart (the soft bias of the biased solve).
+/// The contact frame turns with body A (ctx.turned: each body's rotation since the step began),
+/// the anchors with their bodies; overlaps are pushed apart only in the biased pass.
 template <class S>
-void solve_contacts(std::span<Manifold<S>> manifolds, std::span<RigidBody<S>> bodies,
-                    std::span<const BodyJoints<S>> joints, std::span<Actuator<S>> act,
-                    std::span<const detail::M3<S>> turned, const StepperOptions& options, S h,
-                    bool use_bias) noexcept {
+void solve_contacts(std::span<Manifold<S>> manifolds, const StepContext<S>& ctx,
+                    SolvePass pass) noexcept {
+  const std::span<RigidBody<S>> bodies = ctx.bodies;
+  const std::span<const BodyJoints<S>> joints = ctx.joints;
+  const std::span<Actuator<S>> act = ctx.actuators;
+  const std::span<const Mat<3, 3, S>> turned = ctx.turned;
+  const bool use_bias = pass == SolvePass::biased;
   TOPOGRASP_ASSERT(turned.size() == bodies.size(), "one rotation per body");
-  using V3 = detail::V3<S>;
-  using M3 = detail::M3<S>;
-  const S inv_h = S(1) / h;
+  using V3 = Vec<3, S>;
+  using M3 = Mat<3, 3, S>;
+  const S inv_h = ctx.inv_h;
   for (Manifold<S>& m : manifolds) {
     if (m.count == 0) continue;
     RigidBody<S>& A = bodies[static_cast<std::size_t>(m.body_a)];
@@ -281,7 +287,7 @@ void solve_contacts(std::span<Manifold<S>> manifolds, std::span<RigidBody<S>> bo
     if (m.twist_mass > S(0)) {
       // Torsional friction: |torque impulse| <= mu * radius * normal impulse.
       m.twist_axis_now = dR * m.twist_axis;
-      const S limit = mu * static_cast<S>(options.torsional_friction_radius) * total;
+      const S limit = mu * static_cast<S>(ctx.options.torsional_friction_radius) * total;
       S wn = (wB - wA).dot(m.twist_axis_now);
       if (m.articulated != 0) wn += sigma * joint_spin<S>(J, cact).dot(m.twist_axis_now);
       const S next = detail::clamp<S>(m.twist_impulse - m.twist_mass * wn, -limit, limit);

@@ -36,32 +36,32 @@ struct Polytope {
 
   int n_vertices = 0, n_faces = 0, n_edges = 0, n_directions = 0;
   bool prism = false;  ///< a cylinder's prism: direction 0 is the axis, the others cap edges
-  std::array<detail::V3<S>, max_vertices> vertices{};
-  std::array<detail::V3<S>, max_faces> normals{};
+  std::array<Vec<3, S>, max_vertices> vertices{};
+  std::array<Vec<3, S>, max_faces> normals{};
   std::array<S, max_faces> offsets{};  ///< normal . x = offset on the face plane
   std::array<int, max_faces> face_begin{}, face_size{};
   std::array<int, max_face_indices> face_indices{};
   std::array<std::array<int, 2>, max_edges> edges{};
   std::array<int, max_edges> edge_direction{};  ///< index into directions
-  std::array<detail::V3<S>, max_directions> directions{};
+  std::array<Vec<3, S>, max_directions> directions{};
 };
 
 namespace detail {
 
 template <class S>
-void add_face(Polytope<S>& P, const V3<S>& n, const int* ids_in, int k) {
+void add_face(Polytope<S>& P, const Vec<3, S>& n, const int* ids_in, int k) {
   // Adds the face with outward normal n through the k vertices ids_in, sorted into a loop.
   std::array<int, Polytope<S>::max_vertices> ids{};
-  V3<S> c = V3<S>::Zero();
+  Vec<3, S> c = Vec<3, S>::Zero();
   for (int i = 0; i < k; ++i) {
     ids[static_cast<std::size_t>(i)] = ids_in[i];
     c += P.vertices[static_cast<std::size_t>(ids_in[i])];
   }
   c /= static_cast<S>(k);
-  V3<S> t1, t2;
+  Vec<3, S> t1, t2;
   tangent_basis<S>(n, t1, t2);
   const auto angle = [&](int i) {
-    const V3<S> d = P.vertices[static_cast<std::size_t>(i)] - c;
+    const Vec<3, S> d = P.vertices[static_cast<std::size_t>(i)] - c;
     return std::atan2(d.dot(t2), d.dot(t1));
   };
   std::sort(ids.begin(), ids.begin() + k, [&](int a, int b) { return angle(a) < angle(b); });
@@ -102,7 +102,7 @@ void finish_edges(Polytope<S>& P, std::string_view argument) {
       if (P.n_edges == Polytope<S>::max_edges) throw_too_thin(argument);
       const auto e = static_cast<std::size_t>(P.n_edges++);
       P.edges[e] = {a, b};
-      const V3<S> edge =
+      const Vec<3, S> edge =
           P.vertices[static_cast<std::size_t>(b)] - P.vertices[static_cast<std::size_t>(a)];
       const S largest = edge.cwiseAbs().maxCoeff(), squared = edge.squaredNorm();
       if (!(largest > S(0)) || !std::isfinite(largest))
@@ -110,9 +110,9 @@ void finish_edges(Polytope<S>& P, std::string_view argument) {
                                        "the shape is too small (or too large) for its scalar type: "
                                        "two of its polytope's vertices coincide");
       // An edge whose squared length underflows or overflows is scaled by its largest entry first.
-      const V3<S> d = squared >= std::numeric_limits<S>::min() && std::isfinite(squared)
-                          ? V3<S>(edge.normalized())
-                          : V3<S>((edge / largest).normalized());
+      const Vec<3, S> d = squared >= std::numeric_limits<S>::min() && std::isfinite(squared)
+                              ? Vec<3, S>(edge.normalized())
+                              : Vec<3, S>((edge / largest).normalized());
       int dir = -1;
       for (int k = 0; k < P.n_directions && dir < 0; ++k)
         if (std::abs(P.directions[static_cast<std::size_t>(k)].dot(d)) > S(1) - S(1e-5)) dir = k;
@@ -135,17 +135,16 @@ void finish_edges(Polytope<S>& P, std::string_view argument) {
 /// \throws topograsp::invalid_argument naming "h" if an entry is not finite and positive, or so
 ///         small next to the others that S cannot resolve the box's faces.
 template <class S = double>
-[[nodiscard]] Polytope<S> box_polytope(const detail::V3<S>& h) {
-  using detail::V3;
+[[nodiscard]] Polytope<S> box_polytope(const Vec<3, S>& h) {
   for (int k = 0; k < 3; ++k) require_positive(static_cast<double>(h[k]), "h");
   Polytope<S> P;
   for (int i = 0; i < 8; ++i)
     P.vertices[static_cast<std::size_t>(i)] =
-        V3<S>((i & 1) ? h.x() : -h.x(), (i & 2) ? h.y() : -h.y(), (i & 4) ? h.z() : -h.z());
+        Vec<3, S>((i & 1) ? h.x() : -h.x(), (i & 2) ? h.y() : -h.y(), (i & 4) ? h.z() : -h.z());
   P.n_vertices = 8;
   for (int k = 0; k < 3; ++k)
     for (int s = 0; s < 2; ++s) {
-      V3<S> n = V3<S>::Zero();
+      Vec<3, S> n = Vec<3, S>::Zero();
       n[k] = s ? S(1) : S(-1);
       std::array<int, 4> ids{};
       int c = 0;
@@ -155,9 +154,9 @@ template <class S = double>
     }
   // Directions first along x, y, z so that direction k is the axis k.
   P.n_directions = 3;
-  P.directions[0] = V3<S>::UnitX();
-  P.directions[1] = V3<S>::UnitY();
-  P.directions[2] = V3<S>::UnitZ();
+  P.directions[0] = Vec<3, S>::UnitX();
+  P.directions[1] = Vec<3, S>::UnitY();
+  P.directions[2] = Vec<3, S>::UnitZ();
   detail::finish_edges<S>(P, "h");
   return P;
 }
@@ -168,7 +167,6 @@ template <class S = double>
 ///         positive, or so small next to the other that S cannot resolve the prism's faces.
 template <class S = double>
 [[nodiscard]] Polytope<S> cylinder_polytope(S radius, S half_height) {
-  using detail::V3;
   require_positive(static_cast<double>(radius), "radius");
   require_positive(static_cast<double>(half_height), "half_height");
   constexpr int n = cylinder_prism_sides;
@@ -177,8 +175,8 @@ template <class S = double>
   for (int i = 0; i < n; ++i) {
     const double a = two_pi * static_cast<double>(i) / n;
     const S c = static_cast<S>(std::cos(a)), s = static_cast<S>(std::sin(a));
-    P.vertices[static_cast<std::size_t>(i)] = V3<S>(radius * c, radius * s, -half_height);
-    P.vertices[static_cast<std::size_t>(i + n)] = V3<S>(radius * c, radius * s, half_height);
+    P.vertices[static_cast<std::size_t>(i)] = Vec<3, S>(radius * c, radius * s, -half_height);
+    P.vertices[static_cast<std::size_t>(i + n)] = Vec<3, S>(radius * c, radius * s, half_height);
   }
   P.n_vertices = 2 * n;
   std::array<int, n> bottom{}, top{};
@@ -186,17 +184,17 @@ template <class S = double>
     bottom[static_cast<std::size_t>(i)] = i;
     top[static_cast<std::size_t>(i)] = i + n;
   }
-  detail::add_face<S>(P, V3<S>(S(0), S(0), S(-1)), bottom.data(), n);
-  detail::add_face<S>(P, V3<S>(S(0), S(0), S(1)), top.data(), n);
+  detail::add_face<S>(P, Vec<3, S>(S(0), S(0), S(-1)), bottom.data(), n);
+  detail::add_face<S>(P, Vec<3, S>(S(0), S(0), S(1)), top.data(), n);
   for (int i = 0; i < n; ++i) {
     const int j = (i + 1) % n;
     const double a = two_pi * (static_cast<double>(i) + 0.5) / n;
-    const V3<S> normal(static_cast<S>(std::cos(a)), static_cast<S>(std::sin(a)), S(0));
+    const Vec<3, S> normal(static_cast<S>(std::cos(a)), static_cast<S>(std::sin(a)), S(0));
     const int ids[4] = {i, j, i + n, j + n};
     detail::add_face<S>(P, normal, ids, 4);
   }
   P.n_directions = 1;
-  P.directions[0] = V3<S>::UnitZ();
+  P.directions[0] = Vec<3, S>::UnitZ();
   detail::finish_edges<S>(P, half_height < radius ? "half_height" : "radius");
   return P;
 }

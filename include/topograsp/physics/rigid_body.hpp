@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
-/// RigidBody: the state of one body of a World (dynamic, kinematic or static) and BodyDesc, what a
-/// body is built from.
+/// RigidBody: one body of a World (dynamic, kinematic or static), its constants apart from its
+/// state, and BodyDesc, what a body is built from.
 #pragma once
 
 #include <cstdint>
@@ -9,9 +9,9 @@
 #include <span>
 
 #include <topograsp/core/pose.hpp>
+#include <topograsp/geometry/mass_properties.hpp>
 #include <topograsp/model/spec.hpp>
 #include <topograsp/physics/detail/math.hpp>
-#include <topograsp/physics/mass_properties.hpp>
 
 namespace topograsp {
 
@@ -47,40 +47,58 @@ struct BodyDesc {
   double friction = 0.5;
 };
 
-/// The state of one body. The position x is the centre of mass; the body frame (whose origin
-/// the shapes and BodyDesc::pose refer to) is at x - R local_com.
+/// What a body of a World is made of and never changes as it moves: its type, mass properties
+/// (body frame), friction and shapes.
 template <class S = double>
-struct RigidBody {
-  using V3 = detail::V3<S>;
-  using M3 = detail::M3<S>;
-
+struct BodyConstants {
   BodyType type = BodyType::dynamic;
-  V3 x = V3::Zero();                                ///< centre of mass, world (m)
-  detail::Quat<S> q = detail::Quat<S>::Identity();  ///< orientation
-  M3 R = M3::Identity();                            ///< rotation matrix of q
-  V3 v = V3::Zero();                                ///< linear velocity of x (m/s)
-  V3 w = V3::Zero();                                ///< angular velocity, world (rad/s)
-  V3 local_com = V3::Zero();                        ///< centre of mass in the body frame
-  S mass = S(0), inv_mass = S(0);                   ///< kg, 1/kg (0 if not dynamic)
-  M3 inertia = M3::Zero();            ///< about the centre of mass, body axes (kg m^2)
-  M3 inv_inertia_local = M3::Zero();  ///< its inverse
-  M3 inv_inertia = M3::Zero();        ///< inverse inertia in world axes
+  Vec<3, S> local_com = Vec<3, S>::Zero();      ///< centre of mass in the body frame
+  S mass = S(0), inv_mass = S(0);               ///< kg, 1/kg (0 if not dynamic)
+  Mat<3, 3, S> inertia = Mat<3, 3, S>::Zero();  ///< about the centre of mass, body axes (kg m^2)
+  Mat<3, 3, S> inv_inertia_local = Mat<3, 3, S>::Zero();  ///< its inverse
   S friction = S(0.5);
-  int first_collider = 0, n_colliders = 0;
+  int first_collider = 0, n_colliders = 0;  ///< its shapes, World::collider()
+};
 
+/// Where a body of a World is and how it moves: position, orientation, velocities, and the inverse
+/// inertia in world axes that its orientation gives.
+template <class S = double>
+struct BodyState {
+  Vec<3, S> x = Vec<3, S>::Zero();                  ///< centre of mass, world (m)
+  detail::Quat<S> q = detail::Quat<S>::Identity();  ///< orientation
+  Mat<3, 3, S> R = Mat<3, 3, S>::Identity();        ///< rotation matrix of q
+  Vec<3, S> v = Vec<3, S>::Zero();                  ///< linear velocity of x (m/s)
+  Vec<3, S> w = Vec<3, S>::Zero();                  ///< angular velocity, world (rad/s)
+  Mat<3, 3, S> inv_inertia = Mat<3, 3, S>::Zero();  ///< inverse inertia in world axes
+};
+
+/// One body of a World: its constants and its state. The position x is the centre of mass; the
+/// body frame (whose origin the shapes and BodyDesc::pose refer to) is at x - R local_com.
+template <class S = double>
+struct RigidBody : BodyConstants<S>, BodyState<S> {
+  using V3 = Vec<3, S>;
+  using M3 = Mat<3, 3, S>;
+
+  /// inv_inertia from the orientation R (a dynamic body's; others have none): R I^-1 R'.
+  void update_world_inertia() noexcept {
+    if (this->type == BodyType::dynamic)
+      this->inv_inertia = this->R * this->inv_inertia_local * this->R.transpose();
+  }
   /// The origin of the body frame in the world (m).
-  [[nodiscard]] V3 origin() const noexcept { return x - R * local_com; }
+  [[nodiscard]] V3 origin() const noexcept { return this->x - this->R * this->local_com; }
   /// The body frame as an isometry (double precision).
   [[nodiscard]] Eigen::Isometry3d pose() const noexcept {
     Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-    T.linear() = R.template cast<double>();
+    T.linear() = this->R.template cast<double>();
     T.translation() = origin().template cast<double>();
     return T;
   }
   /// Kinetic energy (J).
   [[nodiscard]] S kinetic_energy() const noexcept {
-    if (type != BodyType::dynamic) return S(0);
-    return S(0.5) * mass * v.squaredNorm() + S(0.5) * w.dot(R * inertia * R.transpose() * w);
+    if (this->type != BodyType::dynamic) return S(0);
+    const M3& rot = this->R;
+    return S(0.5) * this->mass * this->v.squaredNorm() +
+           S(0.5) * this->w.dot(rot * this->inertia * rot.transpose() * this->w);
   }
 };
 

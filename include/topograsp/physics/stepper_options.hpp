@@ -14,7 +14,7 @@ namespace topograsp {
 ///
 /// Contacts come in two kinds. Contacts between a kinematic body (a hand link) and a dynamic body
 /// (the object) are physical spring-dampers, the compliance of a finger pad: the force is
-/// hand_stiffness times the overlap. What a finger presses with is set by its motor's torque
+/// kinematic_stiffness times the overlap. What a finger presses with is set by its motor's torque
 /// limit (World::add_actuator()); the stiffness only sets how far the pad gives under it.
 /// Every other contact (dynamic-dynamic, dynamic-static) is a "rigid" soft contact in the sense of
 /// Box2D v3: its stiffness is given as a frequency that scales with the effective mass, so it
@@ -46,17 +46,19 @@ struct StepperOptions {
   double contact_push_max_speed = 3.0;
 
   /// Stiffness (N/m) of a contact between a kinematic and a dynamic body, per pair of shapes,
-  /// shared evenly among the pair's contact points: the steady normal force is hand_stiffness
+  /// shared evenly among the pair's contact points: the steady normal force is kinematic_stiffness
   /// times the overlap. Default 2000 N/m (2 N per mm of overlap, a soft-fingertip value: the SDH's
   /// rubber pads and a human fingertip both give about 1 to 5 N/mm).
-  double hand_stiffness = 2000.0;
+  double kinematic_stiffness = 2000.0;
   /// Damping ratio of those contacts relative to the contact's effective mass (1 = critical);
   /// the damping coefficient is 2 zeta sqrt(k m_eff) (N s/m). Default 1.
-  double hand_damping_ratio = 1.0;
-  /// The largest speed (m/s) at which a hand contact pushes the object out of an overlap.
+  double kinematic_damping_ratio = 1.0;
+  /// The largest speed (m/s) at which a kinematic body's contact pushes a dynamic body out of an
+  /// overlap.
   /// Default 1 m/s.
-  double hand_push_max_speed = 1.0;
-  /// Radius (m) of the torsional friction of hand contacts (a soft-finger model): each contact
+  double kinematic_push_max_speed = 1.0;
+  /// Radius (m) of the torsional friction of kinematic bodies' contacts (a soft-finger model): each
+  /// contact
   /// pair resists spinning about its normal with a torque of at most mu * radius * normal force.
   /// Without it two fingertips cannot stop an object swinging about the line between them.
   /// 0 disables it. Default 0.003 m (two thirds of a 4.5 mm contact patch).

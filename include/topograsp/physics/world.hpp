@@ -12,16 +12,17 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Eigenvalues>
-
 #include <topograsp/core/assert.hpp>
 #include <topograsp/core/eigen.hpp>
 #include <topograsp/core/error.hpp>
 #include <topograsp/core/status.hpp>
+#include <topograsp/geometry/mass_properties.hpp>
+#include <topograsp/geometry/primitive.hpp>
 #include <topograsp/physics/actuator.hpp>
 #include <topograsp/physics/contact.hpp>
 #include <topograsp/physics/contact_solver.hpp>
-#include <topograsp/physics/mass_properties.hpp>
+#include <topograsp/physics/detail/step.hpp>
+#include <topograsp/physics/detail/world_checks.hpp>
 #include <topograsp/physics/narrow_phase.hpp>
 #include <topograsp/physics/polytope.hpp>
 #include <topograsp/physics/rigid_body.hpp>
@@ -34,14 +35,14 @@ template <class S = double>
 struct Collider {
   int body = -1;
   ShapeType type = ShapeType::sphere;
-  detail::V3<S> size = detail::V3<S>::Zero();         ///< as ShapeSpec::size
-  detail::M3<S> local_R = detail::M3<S>::Identity();  ///< in body axes
-  detail::V3<S> local_p = detail::V3<S>::Zero();      ///< from the centre of mass
+  Vec<3, S> size = Vec<3, S>::Zero();               ///< as ShapeSpec::size
+  Mat<3, 3, S> local_R = Mat<3, 3, S>::Identity();  ///< in body axes
+  Vec<3, S> local_p = Vec<3, S>::Zero();            ///< from the centre of mass
   S bounding_radius = S(0);  ///< of a sphere about the shape's centre that contains it (m)
   int polytope = -1;         ///< index into World's polytopes (boxes and cylinders)
-  detail::M3<S> R = detail::M3<S>::Identity();  ///< world rotation (current)
-  detail::V3<S> p = detail::V3<S>::Zero();      ///< world position (current)
-  ShapeSpec spec{};                             ///< the shape as given, in the body frame
+  Mat<3, 3, S> R = Mat<3, 3, S>::Identity();  ///< world rotation (current)
+  Vec<3, S> p = Vec<3, S>::Zero();            ///< world position (current)
+  ShapeSpec spec{};                           ///< the shape as given, in the body frame
 };
 
 /// The rigid-body stepper over the scalar type \p S (double; float compiles and runs).
@@ -50,7 +51,7 @@ struct Collider {
 /// allocates nothing: every contact slot (one per pair of shapes that can touch) exists from
 /// add_body() on. One step:
 ///  1. kinematic bodies with a target get the velocity that reaches it in one step (ramped
-///     linearly through the step from the previous step's, see kinematic_substep());
+///     linearly through the step from the previous step's, see detail::kinematic_substep());
 ///  2. the narrow phase finds up to 4 contacts per pair of shapes (including speculative ones
 ///     closer than StepperOptions::speculative_distance) and matches them by feature id to the
 ///     previous step's, to warm start them;
@@ -75,20 +76,16 @@ struct Collider {
 template <class S = double>
 class World {
  public:
-  using V3 = detail::V3<S>;
-  using M3 = detail::M3<S>;
+  using V3 = Vec<3, S>;
+  using M3 = Mat<3, 3, S>;
 
   /// The largest magnitude (m) of a shape size, a coordinate of a pose, a body position, and of
   /// StepperOptions::max_speed (m/s): sqrt(largest S) / 1024, 1.3e151 for double and 1.8e16 for
   /// float, so that squared distances and speeds (and sums of a few of them) stay finite in S.
-  [[nodiscard]] static S max_length() noexcept {
-    return std::sqrt(std::numeric_limits<S>::max()) / S(1024);
-  }
+  [[nodiscard]] static S max_length() noexcept { return detail::max_length<S>(); }
   /// The smallest shape size (m): sqrt(smallest normal S) * 1024, 1.5e-151 for double and 1.1e-16
   /// for float, so that squared sizes stay normal numbers in S.
-  [[nodiscard]] static S min_length() noexcept {
-    return std::sqrt(std::numeric_limits<S>::min()) * S(1024);
-  }
+  [[nodiscard]] static S min_length() noexcept { return detail::min_length<S>(); }
 
   /// An empty world. Throws topograsp::invalid_argument naming the option if one is out of range:
   /// a non-positive time step, one the scalar type cannot hold (1e291 s is inf in float), or one
@@ -101,42 +98,9 @@ class World {
   /// any contact exists: with dt = 1 s a box falls 9.8 m in one step, through a 1 m thick ground).
   /// The defaults give 9.81 / 60^2 = 2.7 mm <= 5 mm.
   explicit World(const StepperOptions& options = {}) : options_(options) {
-    require_positive(options.time_step, "options.time_step");
-    if (options.iterations < 1 || options.iterations > 100)
-      detail::throw_invalid_argument(
-          "options.iterations", "expected 1 to 100, got " + std::to_string(options.iterations));
-    if (options.substeps < 1 || options.substeps > 1000)
-      detail::throw_invalid_argument("options.substeps",
-                                     "expected 1 to 1000, got " + std::to_string(options.substeps));
-    if (!std::isfinite(static_cast<S>(options.time_step)))
-      detail::throw_invalid_argument(
-          "options.time_step",
-          "expected a step the scalar type can hold, got " + number(options.time_step) + " s");
-    if (!(static_cast<S>(options.time_step) / static_cast<S>(options.substeps) >= min_length()))
-      detail::throw_invalid_argument(
-          "options.time_step",
-          "a sub-step (time_step / substeps) of " + number(options.time_step / options.substeps) +
-              " s is below what the scalar type divides by safely (" + number(min_length()) + ")");
-    for (std::size_t k = 0; k < 3; ++k) require_finite(options.gravity[k], "options.gravity");
-    require_positive(options.contact_hertz, "options.contact_hertz");
-    require_non_negative(options.contact_damping_ratio, "options.contact_damping_ratio");
-    require_positive(options.contact_push_max_speed, "options.contact_push_max_speed");
-    require_non_negative(options.hand_stiffness, "options.hand_stiffness");
-    require_non_negative(options.hand_damping_ratio, "options.hand_damping_ratio");
-    require_positive(options.hand_push_max_speed, "options.hand_push_max_speed");
-    require_non_negative(options.torsional_friction_radius, "options.torsional_friction_radius");
-    require_non_negative(options.speculative_distance, "options.speculative_distance");
-    require_positive(options.max_speed, "options.max_speed");
-    if (!(static_cast<S>(options.max_speed) <= max_length()))
-      detail::throw_invalid_argument("options.max_speed",
-                                     "expected at most " + number(max_length()) +
-                                         " m/s (its square must stay finite), got " +
-                                         number(options.max_speed));
-    require_non_negative(options.linear_damping, "options.linear_damping");
-    require_non_negative(options.angular_damping, "options.angular_damping");
-    const Eigen::Vector3d g(options.gravity[0], options.gravity[1], options.gravity[2]);
-    require_step_catches_fall(g, "options.time_step");
-    gravity_ = g.template cast<S>();
+    detail::require_stepper_options<S>(options);
+    gravity_ = Eigen::Vector3d(options.gravity[0], options.gravity[1], options.gravity[2])
+                   .template cast<S>();
   }
 
   /// Adds a body and returns its index. Allocates (the body, its shapes and the contact slots of
@@ -151,19 +115,7 @@ class World {
   /// ".inertia": a non-positive mass, a non-finite centre, an inertia not symmetric, not positive
   /// definite or breaking the triangle inequality).
   int add_body(const BodyDesc& desc) {
-    if (desc.shapes.empty())
-      detail::throw_invalid_argument("desc.shapes", "expected at least one shape");
-    for (std::size_t i = 0; i < desc.shapes.size(); ++i) {
-      const std::string name = "desc.shapes[" + std::to_string(i) + "]";
-      require_valid_shape(desc.shapes[i], name);
-      require_representable_shape(desc.shapes[i], name);
-    }
-    require_pose(desc.pose, "desc.pose");
-    require_coordinates(desc.pose.p, "desc.pose");
-    require_non_negative(desc.friction, "desc.friction");
-    if (desc.friction > 1e6)
-      detail::throw_invalid_argument("desc.friction",
-                                     "expected at most 1e6, got " + number(desc.friction));
+    detail::require_body_desc<S>(desc);
     RigidBody<S> b;
     b.type = desc.type;
     b.friction = static_cast<S>(desc.friction);
@@ -171,17 +123,7 @@ class World {
     const V3 p0 = detail::translation_of<S>(desc.pose);
     b.q = detail::Quat<S>(R0).normalized();
     b.R = b.q.toRotationMatrix();
-    if (!desc.shape_density.empty()) {
-      if (desc.shape_density.size() != desc.shapes.size())
-        detail::throw_invalid_argument("desc.shape_density",
-                                       "expected one density per shape (" +
-                                           std::to_string(desc.shapes.size()) + "), got " +
-                                           std::to_string(desc.shape_density.size()));
-      for (std::size_t i = 0; i < desc.shape_density.size(); ++i)
-        require_positive(desc.shape_density[i], "desc.shape_density[" + std::to_string(i) + "]");
-    }
     if (desc.type == BodyType::dynamic) {
-      if (desc.inertial) require_physical_inertial(*desc.inertial, "desc.inertial");
       const MassProperties<S> mp =
           desc.inertial
               ? MassProperties<S>{static_cast<S>(desc.inertial->mass),
@@ -193,11 +135,12 @@ class World {
       b.local_com = mp.com;
       b.inertia = mp.inertia;
       b.inv_inertia_local = inverse_in_range(mp.inertia);
-      b.inv_inertia = b.R * b.inv_inertia_local * b.R.transpose();
-      require_representable_mass(b, desc.inertial                ? "desc.inertial"
-                                    : desc.mass > 0.0            ? "desc.mass"
-                                    : desc.shape_density.empty() ? "desc.density"
-                                                                 : "desc.shape_density");
+      b.update_world_inertia();
+      detail::require_representable_mass(b, options_,
+                                         desc.inertial                ? "desc.inertial"
+                                         : desc.mass > 0.0            ? "desc.mass"
+                                         : desc.shape_density.empty() ? "desc.density"
+                                                                      : "desc.shape_density");
     }
     b.x = p0 + b.R * b.local_com;
     b.first_collider = static_cast<int>(colliders_.size());
@@ -211,28 +154,16 @@ class World {
       c.size = V3(static_cast<S>(s.size[0]), static_cast<S>(s.size[1]), static_cast<S>(s.size[2]));
       c.local_R = detail::rotation_of<S>(s.pose);
       c.local_p = detail::translation_of<S>(s.pose) - b.local_com;
-      switch (s.type) {
-        case ShapeType::sphere:
-          c.bounding_radius = c.size[0];
-          break;
-        case ShapeType::capsule:
-          c.bounding_radius = c.size[0] + c.size[1];
-          break;
-        case ShapeType::box:
-          c.bounding_radius = c.size.norm();
-          c.polytope = static_cast<int>(polytopes_.size());
-          polytopes_.push_back(box_polytope<S>(c.size));
-          break;
-        case ShapeType::cylinder:
-          c.bounding_radius = std::sqrt(c.size[0] * c.size[0] + c.size[1] * c.size[1]);
-          c.polytope = static_cast<int>(polytopes_.size());
-          polytopes_.push_back(cylinder_polytope<S>(c.size[0], c.size[1]));
-          break;
+      c.bounding_radius = detail::bounding_radius<S>(s.type, c.size);
+      if (s.type == ShapeType::box || s.type == ShapeType::cylinder) {
+        c.polytope = static_cast<int>(polytopes_.size());
+        polytopes_.push_back(s.type == ShapeType::box ? box_polytope<S>(c.size)
+                                                      : cylinder_polytope<S>(c.size[0], c.size[1]));
       }
       colliders_.push_back(c);
     }
     bodies_.push_back(b);
-    targets_.push_back(Target{b.R, b.x, false});
+    targets_.push_back(detail::KinematicTarget<S>{b.R, b.x, false});
     joints_.push_back({});
     saved_.push_back({});
     turned_.push_back(M3::Identity());
@@ -249,7 +180,7 @@ class World {
           m.collider_a = ca;
           m.collider_b = cb;
           m.friction = std::sqrt(o.friction * b.friction);
-          m.hand = o.type == BodyType::kinematic || b.type == BodyType::kinematic;
+          m.kinematic = o.type == BodyType::kinematic || b.type == BodyType::kinematic;
           manifolds_.push_back(m);
         }
     }
@@ -264,16 +195,11 @@ class World {
   /// contact slot (the same body, or two bodies neither of which is dynamic), and "mu" for a value
   /// that is negative, not finite or above 1e6.
   void set_pair_friction(int collider_a, int collider_b, double mu) {
-    if (collider_a < 0 || collider_a >= collider_count())
-      detail::throw_invalid_argument("collider_a", "expected a collider index in [0, " +
-                                                       std::to_string(collider_count()) +
-                                                       "), got " + std::to_string(collider_a));
-    if (collider_b < 0 || collider_b >= collider_count())
-      detail::throw_invalid_argument("collider_b", "expected a collider index in [0, " +
-                                                       std::to_string(collider_count()) +
-                                                       "), got " + std::to_string(collider_b));
+    detail::require_index(collider_a, colliders_.size(), "collider", "collider_a");
+    detail::require_index(collider_b, colliders_.size(), "collider", "collider_b");
     require_non_negative(mu, "mu");
-    if (mu > 1e6) detail::throw_invalid_argument("mu", "expected at most 1e6, got " + number(mu));
+    if (mu > 1e6)
+      detail::throw_invalid_argument("mu", "expected at most 1e6, got " + detail::number(mu));
     for (Manifold<S>& m : manifolds_)
       if ((m.collider_a == collider_a && m.collider_b == collider_b) ||
           (m.collider_a == collider_b && m.collider_b == collider_a)) {
@@ -291,12 +217,9 @@ class World {
   /// Throws topograsp::invalid_argument for a bad index, a non-kinematic body, a non-finite pose
   /// or a coordinate above max_length() (target_in_range() tells without throwing).
   void set_target(int body, const Eigen::Isometry3d& pose) {
-    require_body(body, "body");
-    if (bodies_[static_cast<std::size_t>(body)].type != BodyType::kinematic)
-      detail::throw_invalid_argument("body", "expected a kinematic body");
-    require_finite(pose.matrix(), "pose");
-    require_coordinates(pose.translation(), "pose");
-    Target& t = targets_[static_cast<std::size_t>(body)];
+    require_kinematic(body);
+    detail::require_world_pose<S>(pose, "pose");
+    detail::KinematicTarget<S>& t = targets_[static_cast<std::size_t>(body)];
     t.R = orthonormalized(pose.linear().template cast<S>());
     t.p = pose.translation().template cast<S>();
     t.active = true;
@@ -313,16 +236,15 @@ class World {
   /// Throws topograsp::invalid_argument for a bad index, a non-finite pose or a coordinate above
   /// max_length().
   void set_pose(int body, const Eigen::Isometry3d& pose) {
-    require_body(body, "body");
-    require_finite(pose.matrix(), "pose");
-    require_coordinates(pose.translation(), "pose");
+    detail::require_index(body, bodies_.size(), "body", "body");
+    detail::require_world_pose<S>(pose, "pose");
     RigidBody<S>& b = bodies_[static_cast<std::size_t>(body)];
     b.R = orthonormalized(pose.linear().template cast<S>());
     b.q = detail::Quat<S>(b.R).normalized();
     b.R = b.q.toRotationMatrix();
     b.x = pose.translation().template cast<S>() + b.R * b.local_com;
-    if (b.type == BodyType::dynamic) b.inv_inertia = b.R * b.inv_inertia_local * b.R.transpose();
-    targets_[static_cast<std::size_t>(body)] = Target{b.R, b.x, false};
+    b.update_world_inertia();
+    targets_[static_cast<std::size_t>(body)] = detail::KinematicTarget<S>{b.R, b.x, false};
     update_colliders(body);
   }
 
@@ -331,17 +253,8 @@ class World {
   /// index, non-finite values, or a speed |v| or |w| above StepperOptions::max_speed (which would
   /// end the run at the next step).
   void set_velocity(int body, const Eigen::Vector3d& v, const Eigen::Vector3d& w) {
-    require_body(body, "body");
-    require_finite(v, "v");
-    require_finite(w, "w");
-    if (!(v.norm() <= options_.max_speed))
-      detail::throw_invalid_argument(
-          "v", "expected a speed of at most options.max_speed = " + number(options_.max_speed) +
-                   " m/s, got " + number(v.norm()));
-    if (!(w.norm() <= options_.max_speed))
-      detail::throw_invalid_argument(
-          "w", "expected a speed of at most options.max_speed = " + number(options_.max_speed) +
-                   " rad/s, got " + number(w.norm()));
+    detail::require_index(body, bodies_.size(), "body", "body");
+    detail::require_velocity(v, w, options_);
     RigidBody<S>& b = bodies_[static_cast<std::size_t>(body)];
     if (b.type == BodyType::fixed) return;
     b.v = v.template cast<S>();
@@ -356,30 +269,7 @@ class World {
   /// position beyond max_length(), an inertia outside [min_length(), max_length()], a
   /// max_velocity above StepperOptions::max_speed).
   int add_actuator(const ActuatorDesc& desc) {
-    require_finite(desc.position, "desc.position");
-    require_finite(desc.lower, "desc.lower");
-    require_finite(desc.upper, "desc.upper");
-    if (desc.lower > desc.upper)
-      detail::throw_invalid_argument(
-          "desc.lower",
-          "expected at most desc.upper = " + number(desc.upper) + ", got " + number(desc.lower));
-    if (!(std::abs(desc.lower) <= static_cast<double>(max_length()) &&
-          std::abs(desc.upper) <= static_cast<double>(max_length())))
-      detail::throw_invalid_argument("desc.lower",
-                                     "expected limits of at most " + number(max_length()));
-    if (desc.position < desc.lower || desc.position > desc.upper)
-      detail::throw_invalid_argument("desc.position", "expected a value in [" + number(desc.lower) +
-                                                          ", " + number(desc.upper) + "], got " +
-                                                          number(desc.position));
-    require_actuator_inertia(desc.inertia, "desc.inertia");
-    require_positive(desc.max_effort, "desc.max_effort");
-    require_positive(desc.max_velocity, "desc.max_velocity");
-    if (!(desc.max_velocity <= options_.max_speed))
-      detail::throw_invalid_argument("desc.max_velocity", "expected at most options.max_speed = " +
-                                                              number(options_.max_speed) +
-                                                              ", got " + number(desc.max_velocity));
-    require_positive(desc.stiffness, "desc.stiffness");
-    require_non_negative(desc.damping_time, "desc.damping_time");
+    detail::require_actuator_desc<S>(desc, options_);
     detail::Actuator<S> a;
     a.q = a.q0 = a.target = static_cast<S>(desc.position);
     a.lower = static_cast<S>(desc.lower);
@@ -408,24 +298,24 @@ class World {
   /// to the limit). Throws topograsp::invalid_argument for a bad index or a value that is not
   /// finite or beyond max_length().
   void set_actuator_target(int a, double target) {
-    require_actuator(a, "a");
+    detail::require_index(a, actuators_.size(), "actuator", "a");
     require_finite(target, "target");
     if (!(std::abs(target) <= static_cast<double>(max_length())))
-      detail::throw_invalid_argument("target", "expected at most " + number(max_length()));
+      detail::throw_invalid_argument("target", "expected at most " + detail::number(max_length()));
     actuators_[static_cast<std::size_t>(a)].target = static_cast<S>(target);
   }
   /// Sets the torque limit of actuator \p a's servo (N m or N, > 0). Throws
   /// topograsp::invalid_argument for a bad index or a value that is not positive and finite.
   void set_actuator_max_effort(int a, double max_effort) {
-    require_actuator(a, "a");
+    detail::require_index(a, actuators_.size(), "actuator", "a");
     require_positive(max_effort, "max_effort");
     actuators_[static_cast<std::size_t>(a)].max_effort = static_cast<S>(max_effort);
   }
   /// Sets the inertia of actuator \p a (kg m^2 or kg), e.g. each step from the configuration.
   /// Throws topograsp::invalid_argument as ActuatorDesc::inertia is checked.
   void set_actuator_inertia(int a, double inertia) {
-    require_actuator(a, "a");
-    require_actuator_inertia(inertia, "inertia");
+    detail::require_index(a, actuators_.size(), "actuator", "a");
+    detail::require_actuator_inertia<S>(inertia, "inertia");
     detail::Actuator<S>& x = actuators_[static_cast<std::size_t>(a)];
     x.inertia = static_cast<S>(inertia);
     x.inv_inertia = S(1) / x.inertia;
@@ -434,7 +324,7 @@ class World {
   /// the weight of the links it carries). Throws topograsp::invalid_argument for a bad index or
   /// a non-finite value.
   void set_actuator_force(int a, double force) {
-    require_actuator(a, "a");
+    detail::require_index(a, actuators_.size(), "actuator", "a");
     require_finite(force, "force");
     actuators_[static_cast<std::size_t>(a)].force = static_cast<S>(force);
   }
@@ -442,13 +332,13 @@ class World {
   /// accumulated impulses cleared. Throws topograsp::invalid_argument for a bad index or a
   /// position outside its limits.
   void set_actuator_position(int a, double position) {
-    require_actuator(a, "a");
+    detail::require_index(a, actuators_.size(), "actuator", "a");
     detail::Actuator<S>& x = actuators_[static_cast<std::size_t>(a)];
     require_finite(position, "position");
     if (position < static_cast<double>(x.lower) || position > static_cast<double>(x.upper))
-      detail::throw_invalid_argument("position", "expected a value in [" + number(x.lower) + ", " +
-                                                     number(x.upper) + "], got " +
-                                                     number(position));
+      detail::throw_invalid_argument("position", "expected a value in [" + detail::number(x.lower) +
+                                                     ", " + detail::number(x.upper) + "], got " +
+                                                     detail::number(position));
     x.q = x.q0 = x.target = static_cast<S>(position);
     x.qd = x.motor_impulse = x.lower_impulse = x.upper_impulse = x.step_impulse = S(0);
   }
@@ -460,31 +350,9 @@ class World {
   /// argument for a bad body index or a body that is not kinematic, more than k_max_body_joints
   /// joints, a bad actuator index, a non-unit or non-finite axis, a non-finite origin or gear.
   void set_body_joints(int body, std::span<const BodyJoint> joints) {
-    require_body(body, "body");
-    if (bodies_[static_cast<std::size_t>(body)].type != BodyType::kinematic)
-      detail::throw_invalid_argument("body", "expected a kinematic body");
-    if (joints.size() > static_cast<std::size_t>(k_max_body_joints))
-      detail::throw_invalid_argument("joints", "expected at most " +
-                                                   std::to_string(k_max_body_joints) +
-                                                   " joints, got " + std::to_string(joints.size()));
+    require_kinematic(body);
+    detail::require_body_joints<S>(joints, actuators_.size());
     detail::BodyJoints<S>& out = joints_[static_cast<std::size_t>(body)];
-    for (std::size_t j = 0; j < joints.size(); ++j) {
-      // Checked without building a name first: this runs every step and allocates nothing.
-      const BodyJoint& in = joints[j];
-      const auto name = [j](std::string_view field) {
-        return "joints[" + std::to_string(j) + "]." + std::string(field);
-      };
-      if (in.actuator < 0 || in.actuator >= actuator_count())
-        require_actuator(in.actuator, name("actuator"));
-      if (!in.axis.allFinite() || !(std::abs(in.axis.norm() - 1.0) <= 1e-6))
-        detail::throw_invalid_argument(name("axis"), "expected a finite unit vector");
-      if (!in.origin.allFinite() ||
-          !(in.origin.cwiseAbs().maxCoeff() <= static_cast<double>(max_length())))
-        detail::throw_invalid_argument(name("origin"), "expected finite coordinates of at most " +
-                                                           number(max_length()) + " m");
-      if (!std::isfinite(in.gear))
-        detail::throw_invalid_argument(name("gear"), "expected a finite number");
-    }
     out.count = static_cast<int>(joints.size());
     for (std::size_t j = 0; j < joints.size(); ++j) {
       out.actuator[j] = joints[j].actuator;
@@ -495,14 +363,11 @@ class World {
     }
   }
   /// Moves kinematic body \p body to \p pose at once, keeping its motion across steps (the
-  /// velocity ramp of kinematic_substep()): for a body carried by actuators, placed after each
-  /// step where they took it. Throws as set_pose() does, and for a body that is not kinematic.
+  /// velocity ramp of detail::kinematic_substep()): for a body carried by actuators, placed after
+  /// each step where they took it. Throws as set_pose() does, and for a body that is not kinematic.
   void move_kinematic(int body, const Eigen::Isometry3d& pose) {
-    require_body(body, "body");
-    if (bodies_[static_cast<std::size_t>(body)].type != BodyType::kinematic)
-      detail::throw_invalid_argument("body", "expected a kinematic body");
-    require_finite(pose.matrix(), "pose");
-    require_coordinates(pose.translation(), "pose");
+    require_kinematic(body);
+    detail::require_world_pose<S>(pose, "pose");
     RigidBody<S>& b = bodies_[static_cast<std::size_t>(body)];
     b.R = orthonormalized(pose.linear().template cast<S>());
     b.q = detail::Quat<S>(b.R).normalized();
@@ -516,7 +381,7 @@ class World {
   /// (see the constructor).
   void set_gravity(const Eigen::Vector3d& g) {
     require_finite(g, "g");
-    require_step_catches_fall(g, "g");
+    detail::require_step_catches_fall(g, options_, "g");
     gravity_ = g.template cast<S>();
   }
   [[nodiscard]] V3 gravity() const noexcept { return gravity_; }
@@ -527,48 +392,33 @@ class World {
   /// the step is undone (every number stays finite) and later calls do nothing and return it again.
   Status step() noexcept {
     if (status_ != Status::success) return status_;
-    const S dt = static_cast<S>(options_.time_step);
-    const int n_sub = options_.substeps;
-    const S h = dt / static_cast<S>(n_sub);
+    const detail::StepContext<S> ctx =
+        detail::make_step_context<S>(bodies_, joints_, actuators_, turned_, options_, gravity_);
     save_state();
-    for (detail::Actuator<S>& a : actuators_) {
-      a.q0 = a.q;
-      a.step_impulse = S(0);
-    }
-    drive_kinematic(dt);
+    detail::begin_actuator_step(ctx);
+    detail::drive_kinematic<S>(ctx, targets_);
     find_contacts();
-    detail::prepare_contacts<S>(manifolds_, bodies_, joints_, actuators_, options_, h);
-    const S push = static_cast<S>(options_.contact_push_max_speed);
-    const S lin_damp = S(1) / (S(1) + h * static_cast<S>(options_.linear_damping));
-    const S ang_damp = S(1) / (S(1) + h * static_cast<S>(options_.angular_damping));
-    for (int sub = 0; sub < n_sub; ++sub) {
-      kinematic_substep(sub, n_sub);
-      for (RigidBody<S>& b : bodies_) {
-        if (b.type != BodyType::dynamic) continue;
-        b.v = lin_damp * (b.v + h * gravity_);
-        b.w *= ang_damp;
-      }
-      for (detail::Actuator<S>& a : actuators_) a.qd += h * a.force * a.inv_inertia;
+    detail::prepare_contacts<S>(manifolds_, ctx);
+    for (int sub = 0; sub < ctx.substeps; ++sub) {
+      detail::kinematic_substep<S>(ctx, targets_, sub);
+      detail::integrate_velocities(ctx);
       detail::warm_start_actuators<S>(actuators_);
-      detail::warm_start_contacts<S>(manifolds_, bodies_, joints_, actuators_);
+      detail::warm_start_contacts<S>(manifolds_, ctx);
       update_turned();
       for (int it = 0; it < options_.iterations; ++it) {
-        detail::solve_actuators<S>(actuators_, h, true, push);
-        detail::solve_contacts<S>(manifolds_, bodies_, joints_, actuators_, turned_, options_, h,
-                                  true);
+        detail::solve_actuators<S>(actuators_, ctx.h, detail::SolvePass::biased, ctx.push);
+        detail::solve_contacts<S>(manifolds_, ctx, detail::SolvePass::biased);
       }
-      integrate_positions(h);
-      for (detail::Actuator<S>& a : actuators_) a.q += h * a.qd;
+      detail::integrate_positions(ctx);
       update_turned();
       for (int it = 0; it < options_.iterations; ++it) {
-        detail::solve_actuators<S>(actuators_, h, false, push);
-        detail::solve_contacts<S>(manifolds_, bodies_, joints_, actuators_, turned_, options_, h,
-                                  false);
+        detail::solve_actuators<S>(actuators_, ctx.h, detail::SolvePass::relax, ctx.push);
+        detail::solve_contacts<S>(manifolds_, ctx, detail::SolvePass::relax);
       }
       detail::accumulate_impulses<S>(manifolds_);
-      for (detail::Actuator<S>& a : actuators_) a.step_impulse += a.motor_impulse;
+      detail::end_actuator_substep(ctx);
     }
-    finish_kinematic();
+    detail::finish_kinematic<S>(ctx, targets_);
     for (int i = 0; i < static_cast<int>(bodies_.size()); ++i) update_colliders(i);
     detail::store_impulses<S>(manifolds_);
     if (!state_ok()) {
@@ -635,128 +485,16 @@ class World {
   }
 
  private:
-  struct Target {
-    M3 R;
-    V3 p;
-    bool active = false;
-    V3 v = V3::Zero(), w = V3::Zero();            // this step's chord velocities
-    V3 prev_v = V3::Zero(), prev_w = V3::Zero();  // the previous step's
-  };
   struct Saved {
     V3 x = V3::Zero(), v = V3::Zero(), w = V3::Zero();
     detail::Quat<S> q = detail::Quat<S>::Identity();
     M3 R = M3::Identity();
   };
 
-  static void require_pose(const Pose& pose, std::string_view argument) {
-    for (double v : pose.R) require_finite(v, argument);
-    for (double v : pose.p) require_finite(v, argument);
-    const Mat3 R = pose.rotation();
-    if (!(R.transpose() * R).isApprox(Mat3::Identity(), 1e-6) || R.determinant() < 0.0)
-      detail::throw_invalid_argument(argument, "expected a rotation (orthonormal, det +1)");
-  }
-  void require_actuator(int a, std::string_view argument) const {
-    if (a < 0 || a >= static_cast<int>(actuators_.size()))
-      detail::throw_invalid_argument(argument, "expected an actuator index in [0, " +
-                                                   std::to_string(actuators_.size()) + "), got " +
-                                                   std::to_string(a));
-  }
-  static void require_actuator_inertia(double inertia, std::string_view argument) {
-    require_positive(inertia, argument);
-    if (!(inertia >= static_cast<double>(min_length()) &&
-          inertia <= static_cast<double>(max_length())))
-      detail::throw_invalid_argument(argument, "expected a value in [" + number(min_length()) +
-                                                   ", " + number(max_length()) + "], got " +
-                                                   number(inertia));
-  }
-  void require_body(int body, std::string_view argument) const {
-    if (body < 0 || body >= static_cast<int>(bodies_.size()))
-      detail::throw_invalid_argument(argument, "expected a body index in [0, " +
-                                                   std::to_string(bodies_.size()) + "), got " +
-                                                   std::to_string(body));
-  }
-  template <class T>
-  static std::string number(T v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", static_cast<double>(v));
-    return buf;
-  }
-  void require_step_catches_fall(const Eigen::Vector3d& g, std::string_view argument) const {
-    const double dt = options_.time_step;
-    const double fall = g.norm() * dt * dt;
-    if (!(fall <= options_.speculative_distance))
-      detail::throw_invalid_argument(
-          argument, "a body released at rest falls |g| dt^2 = " + number(fall) +
-                        " m in one step, more than options.speculative_distance = " +
-                        number(options_.speculative_distance) +
-                        " m, so contacts would miss it (time_step " + number(dt) + " s, |g| " +
-                        number(g.norm()) + " m/s^2): use a shorter time step");
-  }
-  template <class D>
-  static void require_coordinates(const Eigen::MatrixBase<D>& p, std::string_view argument) {
-    for (Eigen::Index k = 0; k < p.size(); ++k)
-      if (!(std::abs(static_cast<double>(p[k])) <= static_cast<double>(max_length())))
-        detail::throw_invalid_argument(argument, "expected coordinates of at most " +
-                                                     number(max_length()) + " m, got " +
-                                                     number(static_cast<double>(p[k])));
-  }
-  static void require_coordinates(const std::array<double, 3>& p, std::string_view argument) {
-    require_coordinates(Eigen::Map<const Eigen::Vector3d>(p.data()), argument);
-  }
-  static void require_representable_shape(const ShapeSpec& s, const std::string& argument) {
-    const int n = s.type == ShapeType::sphere ? 1 : s.type == ShapeType::box ? 3 : 2;
-    for (int k = 0; k < n; ++k) {
-      const double v = s.size[static_cast<std::size_t>(k)];
-      if (v == 0.0 && s.type == ShapeType::capsule && k == 1)
-        continue;  // a capsule may be a sphere
-      if (!(v >= static_cast<double>(min_length()) && v <= static_cast<double>(max_length())))
-        detail::throw_invalid_argument(argument + ".size[" + std::to_string(k) + "]",
-                                       "expected a size in [" + number(min_length()) + ", " +
-                                           number(max_length()) + "] m, got " + number(v));
-    }
-    require_coordinates(s.pose.p, argument + ".pose");
-  }
-  // A given inertial must be one a rigid body can have (as MuJoCo's mj_setConst checks).
-  static void require_physical_inertial(const MassProperties<double>& m, const std::string& arg) {
-    require_positive(m.mass, arg + ".mass");
-    if (!m.com.allFinite()) detail::throw_invalid_argument(arg + ".com", "expected finite numbers");
-    const Mat3& I = m.inertia;
-    if (!I.allFinite() || !I.isApprox(I.transpose(), 1e-9))
-      detail::throw_invalid_argument(arg + ".inertia", "expected a finite symmetric matrix");
-    const Vec3 e = Eigen::SelfAdjointEigenSolver<Mat3>(I).eigenvalues();
-    if (!(e[0] > 0.0) || e[0] + e[1] < e[2] * (1.0 - 1e-9))
-      detail::throw_invalid_argument(arg + ".inertia",
-                                     "expected positive principal moments with A + B >= C, got " +
-                                         number(e[0]) + ", " + number(e[1]) + ", " + number(e[2]) +
-                                         " kg m^2");
-  }
-  void require_representable_mass(const RigidBody<S>& b, std::string_view argument) const {
-    const S smin = std::numeric_limits<S>::min(), smax = std::numeric_limits<S>::max();
-    const S v2 = static_cast<S>(options_.max_speed) * static_cast<S>(options_.max_speed);
-    const bool mass_ok = std::isfinite(b.mass) && b.mass >= smin && std::isfinite(b.inv_mass) &&
-                         b.mass <= smax / v2 && b.local_com.allFinite();
-    if (!mass_ok)
-      detail::throw_invalid_argument(
-          argument, "the body's mass " + number(static_cast<double>(b.mass)) +
-                        " kg is not representable: expected a normal positive number whose "
-                        "kinetic energy at options.max_speed stays finite, within [" +
-                        number(static_cast<double>(smin)) + ", " +
-                        number(static_cast<double>(smax / v2)) + "] kg");
-    bool inertia_ok =
-        b.inertia.allFinite() && b.inv_inertia_local.allFinite() && b.inv_inertia.allFinite();
-    for (int k = 0; k < 3 && inertia_ok; ++k)
-      inertia_ok = b.inertia(k, k) >= smin && b.inertia(k, k) <= smax / v2 &&
-                   b.inv_inertia_local(k, k) > S(0);
-    if (!inertia_ok)
-      detail::throw_invalid_argument(
-          argument, "the body's inertia (diagonal " + number(static_cast<double>(b.inertia(0, 0))) +
-                        ", " + number(static_cast<double>(b.inertia(1, 1))) + ", " +
-                        number(static_cast<double>(b.inertia(2, 2))) +
-                        " kg m^2) is not representable: expected normal positive numbers with a "
-                        "finite inverse whose kinetic energy at options.max_speed stays finite, "
-                        "within [" +
-                        number(static_cast<double>(smin)) + ", " +
-                        number(static_cast<double>(smax / v2)) + "] kg m^2");
+  void require_kinematic(int body) const {
+    detail::require_index(body, bodies_.size(), "body", "body");
+    if (bodies_[static_cast<std::size_t>(body)].type != BodyType::kinematic)
+      detail::throw_invalid_argument("body", "expected a kinematic body");
   }
   // The inverse of a symmetric positive definite 3x3 matrix. Eigen's closed-form inverse forms
   // products of three entries, which overflow or underflow for entries beyond about 1e100 (or
@@ -799,7 +537,7 @@ class World {
       b.w = saved_[i].w;
       b.q = saved_[i].q;
       b.R = b.q.toRotationMatrix();
-      if (b.type == BodyType::dynamic) b.inv_inertia = b.R * b.inv_inertia_local * b.R.transpose();
+      b.update_world_inertia();
       update_colliders(static_cast<int>(i));
     }
     for (std::size_t i = 0; i < actuators_.size(); ++i) actuators_[i] = saved_actuators_[i];
@@ -817,53 +555,6 @@ class World {
     for (const detail::Actuator<S>& a : actuators_)
       if (!std::isfinite(a.q) || !std::isfinite(a.qd) || std::abs(a.qd) > vmax) return false;
     return true;
-  }
-
-  // Kinematic bodies: the constant velocity that reaches the target in one step.
-  void drive_kinematic(S dt) noexcept {
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
-      RigidBody<S>& b = bodies_[i];
-      Target& t = targets_[i];
-      if (b.type != BodyType::kinematic || !t.active) continue;
-      t.v = (t.p - b.x) / dt;
-      t.w = detail::log_rotation<S>(M3(t.R * b.R.transpose())) / dt;
-    }
-  }
-  // The velocity of a kinematic body in sub-step s of n. The targets are samples of a smooth
-  // path: the chord velocity u of this step is the velocity at its middle, and the velocity
-  // changes linearly through the step at the rate (u - u_prev) / dt, continuous across steps for
-  // a path of constant acceleration (a turning hand). The sub-step velocities average to u, so
-  // the body still reaches its target. A constant velocity per step instead would turn the
-  // velocity abruptly at each step, a demand friction can meet only within one sub-step.
-  void kinematic_substep(int s, int n) noexcept {
-    const S c = (static_cast<S>(s) + S(0.5)) / static_cast<S>(n) - S(0.5);
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
-      RigidBody<S>& b = bodies_[i];
-      const Target& t = targets_[i];
-      if (b.type != BodyType::kinematic || !t.active) continue;
-      b.v = t.v + c * (t.v - t.prev_v);
-      b.w = t.w + c * (t.w - t.prev_w);
-    }
-  }
-  void finish_kinematic() noexcept {
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
-      RigidBody<S>& b = bodies_[i];
-      Target& t = targets_[i];
-      if (b.type != BodyType::kinematic) continue;
-      if (!t.active) {
-        t.prev_v.setZero();
-        t.prev_w.setZero();
-        continue;
-      }
-      b.x = t.p;
-      b.q = detail::Quat<S>(t.R).normalized();
-      b.R = b.q.toRotationMatrix();
-      b.v.setZero();
-      b.w.setZero();
-      t.prev_v = t.v;
-      t.prev_w = t.w;
-      t.active = false;
-    }
   }
 
   [[nodiscard]] ShapeView<S> view(const Collider<S>& c) const noexcept {
@@ -926,23 +617,10 @@ class World {
                                                       : M3(bodies_[i].R * saved_[i].R.transpose());
   }
 
-  void integrate_positions(S h) noexcept {
-    for (RigidBody<S>& b : bodies_) {
-      if (b.type == BodyType::fixed) continue;
-      b.x += h * b.v;
-      if (b.w.squaredNorm() > S(0)) {
-        b.q = (detail::exp_rotation<S>(V3(h * b.w)) * b.q).normalized();
-        b.R = b.q.toRotationMatrix();
-        if (b.type == BodyType::dynamic)
-          b.inv_inertia = b.R * b.inv_inertia_local * b.R.transpose();
-      }
-    }
-  }
-
   StepperOptions options_;
   V3 gravity_ = V3::Zero();
   std::vector<RigidBody<S>> bodies_;
-  std::vector<Target> targets_;
+  std::vector<detail::KinematicTarget<S>> targets_;
   std::vector<Saved> saved_;
   std::vector<M3> turned_;  // rotation of each body since the step began (solver scratch)
   std::vector<Collider<S>> colliders_;

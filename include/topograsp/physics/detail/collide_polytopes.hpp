@@ -28,7 +28,7 @@ void collide_polytopes(const ShapeView<S>& A, const ShapeView<S>& B, S margin,
                    "the polytope collider needs both shapes' polytopes");
   const Polytope<S>& PA = *A.polytope;
   const Polytope<S>& PB = *B.polytope;
-  std::array<V3<S>, Polytope<S>::max_vertices> va, vb;
+  std::array<Vec<3, S>, Polytope<S>::max_vertices> va, vb;
   for (int i = 0; i < PA.n_vertices; ++i) {
     const auto u = static_cast<std::size_t>(i);
     va[u] = A.R * PA.vertices[u] + A.p;
@@ -37,12 +37,12 @@ void collide_polytopes(const ShapeView<S>& A, const ShapeView<S>& B, S margin,
     const auto u = static_cast<std::size_t>(i);
     vb[u] = B.R * PB.vertices[u] + B.p;
   }
-  const auto min_dot = [](const auto& v, int n, const V3<S>& axis) {
+  const auto min_dot = [](const auto& v, int n, const Vec<3, S>& axis) {
     S m = std::numeric_limits<S>::max();
     for (int i = 0; i < n; ++i) m = std::min(m, axis.dot(v[static_cast<std::size_t>(i)]));
     return m;
   };
-  const auto max_dot = [](const auto& v, int n, const V3<S>& axis) {
+  const auto max_dot = [](const auto& v, int n, const Vec<3, S>& axis) {
     S m = std::numeric_limits<S>::lowest();
     for (int i = 0; i < n; ++i) m = std::max(m, axis.dot(v[static_cast<std::size_t>(i)]));
     return m;
@@ -55,7 +55,7 @@ void collide_polytopes(const ShapeView<S>& A, const ShapeView<S>& B, S margin,
     face = 0;
     for (int f = 0; f < PX.n_faces; ++f) {
       const auto u = static_cast<std::size_t>(f);
-      const V3<S> n = X.R * PX.normals[u];
+      const Vec<3, S> n = X.R * PX.normals[u];
       const S s = min_dot(vy, ny, n) - (PX.offsets[u] + n.dot(X.p));
       if (s > margin) return false;
       if (s > sep) {
@@ -72,13 +72,13 @@ void collide_polytopes(const ShapeView<S>& A, const ShapeView<S>& B, S margin,
   // Edge pairs.
   S sep_e = std::numeric_limits<S>::lowest();
   int dir_a = -1, dir_b = -1;
-  V3<S> axis_e = V3<S>::Zero();
+  Vec<3, S> axis_e = Vec<3, S>::Zero();
   for (int i = 0; i < PA.n_directions; ++i) {
-    const V3<S> ea = A.R * PA.directions[static_cast<std::size_t>(i)];
+    const Vec<3, S> ea = A.R * PA.directions[static_cast<std::size_t>(i)];
     for (int j = 0; j < PB.n_directions; ++j) {
       if (PA.prism && PB.prism && i > 0 && j > 0) continue;
-      const V3<S> eb = B.R * PB.directions[static_cast<std::size_t>(j)];
-      V3<S> axis = ea.cross(eb);
+      const Vec<3, S> eb = B.R * PB.directions[static_cast<std::size_t>(j)];
+      Vec<3, S> axis = ea.cross(eb);
       const S len = axis.norm();
       if (len < S(1e-6)) continue;
       axis /= len;
@@ -126,13 +126,13 @@ void collide_polytopes(const ShapeView<S>& A, const ShapeView<S>& B, S margin,
     }
     const auto& EA = PA.edges[static_cast<std::size_t>(ea)];
     const auto& EB = PB.edges[static_cast<std::size_t>(eb)];
-    const V3<S>& a0 = va[static_cast<std::size_t>(EA[0])];
-    const V3<S>& a1 = va[static_cast<std::size_t>(EA[1])];
-    const V3<S>& b0 = vb[static_cast<std::size_t>(EB[0])];
-    const V3<S>& b1 = vb[static_cast<std::size_t>(EB[1])];
+    const Vec<3, S>& a0 = va[static_cast<std::size_t>(EA[0])];
+    const Vec<3, S>& a1 = va[static_cast<std::size_t>(EA[1])];
+    const Vec<3, S>& b0 = vb[static_cast<std::size_t>(EB[0])];
+    const Vec<3, S>& b1 = vb[static_cast<std::size_t>(EB[1])];
     S s, t;
     closest_segment_params<S>(a0, a1, b0, b1, s, t);
-    const V3<S> pa = a0 + s * (a1 - a0), pb = b0 + t * (b1 - b0);
+    const Vec<3, S> pa = a0 + s * (a1 - a0), pb = b0 + t * (b1 - b0);
     out.add(S(0.5) * (pa + pb), axis_e, sep_e,
             (1u << 30) | (static_cast<std::uint32_t>(ea) << 8) | static_cast<std::uint32_t>(eb));
     return;
@@ -147,7 +147,7 @@ void collide_polytopes(const ShapeView<S>& A, const ShapeView<S>& B, S margin,
   const auto& vinc = flip ? va : vb;
   const int rf = flip ? face_b : face_a;
   const auto rfu = static_cast<std::size_t>(rf);
-  const V3<S> n_ref = RefV.R * Ref.normals[rfu];
+  const Vec<3, S> n_ref = RefV.R * Ref.normals[rfu];
   const S d_ref = Ref.offsets[rfu] + n_ref.dot(RefV.p);
   int inc_face = 0;
   S most = std::numeric_limits<S>::max();
@@ -159,7 +159,7 @@ void collide_polytopes(const ShapeView<S>& A, const ShapeView<S>& B, S margin,
     }
   }
   constexpr int cap = 2 * Polytope<S>::max_vertices + 4;
-  std::array<V3<S>, cap> poly, next;
+  std::array<Vec<3, S>, cap> poly, next;
   std::array<std::uint32_t, cap> ids, next_ids;
   const auto ifu = static_cast<std::size_t>(inc_face);
   int count = Inc.face_size[ifu];
@@ -171,11 +171,11 @@ void collide_polytopes(const ShapeView<S>& A, const ShapeView<S>& B, S margin,
   }
   const int nr = Ref.face_size[rfu];
   for (int e = 0; e < nr && count > 0; ++e) {
-    const V3<S>& r0 = vref[static_cast<std::size_t>(
+    const Vec<3, S>& r0 = vref[static_cast<std::size_t>(
         Ref.face_indices[static_cast<std::size_t>(Ref.face_begin[rfu] + e)])];
-    const V3<S>& r1 = vref[static_cast<std::size_t>(
+    const Vec<3, S>& r1 = vref[static_cast<std::size_t>(
         Ref.face_indices[static_cast<std::size_t>(Ref.face_begin[rfu] + (e + 1) % nr)])];
-    const V3<S> m = (r1 - r0).cross(n_ref);  // outward side normal of the loop edge
+    const Vec<3, S> m = (r1 - r0).cross(n_ref);  // outward side normal of the loop edge
     const S off = m.dot(r0);
     int k = 0;
     for (int i = 0; i < count; ++i) {
@@ -196,7 +196,7 @@ void collide_polytopes(const ShapeView<S>& A, const ShapeView<S>& B, S margin,
     ids.swap(next_ids);
   }
   // Keep the points under the reference face (within the margin).
-  std::array<V3<S>, cap> pts;
+  std::array<Vec<3, S>, cap> pts;
   std::array<S, cap> seps;
   std::array<std::uint32_t, cap> pid;
   int np = 0;
@@ -210,7 +210,7 @@ void collide_polytopes(const ShapeView<S>& A, const ShapeView<S>& B, S margin,
     pid[w] = ids[u];
   }
   if (np == 0) return;
-  const V3<S> normal = flip ? V3<S>(-n_ref) : n_ref;
+  const Vec<3, S> normal = flip ? Vec<3, S>(-n_ref) : n_ref;
   const std::uint32_t base = (flip ? 1u << 31 : 0u) | (static_cast<std::uint32_t>(rf) << 21) |
                              (static_cast<std::uint32_t>(inc_face) << 16);
   // Reduce to at most 4 points: the deepest, the farthest from it, then the two that span the
@@ -233,7 +233,7 @@ void collide_polytopes(const ShapeView<S>& A, const ShapeView<S>& B, S margin,
         i1 = i;
       }
     }
-    const V3<S> e = pts[static_cast<std::size_t>(i1)] - pts[static_cast<std::size_t>(i0)];
+    const Vec<3, S> e = pts[static_cast<std::size_t>(i1)] - pts[static_cast<std::size_t>(i0)];
     int i2 = -1, i3 = -1;
     S amax = S(0), amin = S(0);
     for (int i = 0; i < np; ++i) {

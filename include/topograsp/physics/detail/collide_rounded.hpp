@@ -23,19 +23,19 @@ namespace topograsp::detail {
 template <class S>
 void collide_rounded_rounded(const ShapeView<S>& A, const ShapeView<S>& B, S margin,
                              ContactSet<S>& out) noexcept {
-  V3<S> a0, a1, b0, b1, pa, pb;
+  Vec<3, S> a0, a1, b0, b1, pa, pb;
   core_segment<S>(A, a0, a1);
   core_segment<S>(B, b0, b1);
   const S ra = A.size[0], rb = B.size[0];
   closest_segment_points<S>(a0, a1, b0, b1, pa, pb);
-  const V3<S> d = pb - pa;
+  const Vec<3, S> d = pb - pa;
   const S dist = d.norm();
   if (dist > ra + rb + margin) return;
-  V3<S> n = dist > S(1e-9) ? V3<S>(d / dist) : any_perpendicular<S>(a1 - a0);
-  const V3<S> ua = a1 - a0, ub = b1 - b0;
+  Vec<3, S> n = dist > S(1e-9) ? Vec<3, S>(d / dist) : any_perpendicular<S>(a1 - a0);
+  const Vec<3, S> ua = a1 - a0, ub = b1 - b0;
   const S la = ua.norm(), lb = ub.norm();
   if (la > S(1e-9) && lb > S(1e-9)) {
-    const V3<S> da = ua / la, db = ub / lb;
+    const Vec<3, S> da = ua / la, db = ub / lb;
     if (da.cross(db).norm() < S(0.05)) {
       // Side by side: contacts at both ends of the overlap of B's projection onto A.
       const S t0 = (b0 - a0).dot(da), t1 = (b1 - a0).dot(da);
@@ -43,12 +43,12 @@ void collide_rounded_rounded(const ShapeView<S>& A, const ShapeView<S>& B, S mar
       if (hi - lo > S(1e-6)) {
         const S ends[2] = {lo, hi};
         for (int i = 0; i < 2; ++i) {
-          const V3<S> qa = a0 + ends[i] * da;
+          const Vec<3, S> qa = a0 + ends[i] * da;
           const S tb = clamp<S>((qa - b0).dot(db), S(0), lb);
-          const V3<S> qb = b0 + tb * db;
-          const V3<S> e = qb - qa;
+          const Vec<3, S> qb = b0 + tb * db;
+          const Vec<3, S> e = qb - qa;
           const S de = e.norm();
-          const V3<S> ni = de > S(1e-9) ? V3<S>(e / de) : n;
+          const Vec<3, S> ni = de > S(1e-9) ? Vec<3, S>(e / de) : n;
           const S sep = de - ra - rb;
           if (sep < margin)
             out.add(S(0.5) * (qa + ra * ni + qb - rb * ni), ni, sep, static_cast<std::uint32_t>(i));
@@ -63,7 +63,8 @@ void collide_rounded_rounded(const ShapeView<S>& A, const ShapeView<S>& B, S mar
 // The closest point of a box (half extents h) or exact cylinder (radius, half height) to the
 // local point x; sets inside when x is in the solid.
 template <class S>
-V3<S> closest_on_solid(ShapeType type, const V3<S>& size, const V3<S>& x, bool& inside) noexcept {
+Vec<3, S> closest_on_solid(ShapeType type, const Vec<3, S>& size, const Vec<3, S>& x,
+                           bool& inside) noexcept {
   return type == ShapeType::box ? closest_on_box<S>(size, x, inside)
                                 : closest_on_cylinder<S>(size[0], size[1], x, inside);
 }
@@ -86,16 +87,16 @@ bool clip_slab(S x0, S d, S h, S& t0, S& t1) noexcept {
 template <class S>
 void collide_rounded_solid(const ShapeView<S>& A, const ShapeView<S>& B, S margin,
                            ContactSet<S>& out) noexcept {
-  V3<S> w0, w1;
+  Vec<3, S> w0, w1;
   S r;
   core_segment<S>(A, w0, w1);
   r = A.size[0];
-  const M3<S> Rt = B.R.transpose();
-  const V3<S> P0 = Rt * (w0 - B.p), P1 = Rt * (w1 - B.p), D = P1 - P0;
-  const V3<S>& h = B.size;
+  const Mat<3, 3, S> Rt = B.R.transpose();
+  const Vec<3, S> P0 = Rt * (w0 - B.p), P1 = Rt * (w1 - B.p), D = P1 - P0;
+  const Vec<3, S>& h = B.size;
   const bool box = B.type == ShapeType::box;
   const bool segment = D.squaredNorm() > S(1e-18);
-  const auto emit = [&](const V3<S>& point_local, const V3<S>& normal_local, S sep,
+  const auto emit = [&](const Vec<3, S>& point_local, const Vec<3, S>& normal_local, S sep,
                         std::uint32_t id) {
     out.add(B.R * point_local + B.p, B.R * normal_local, sep, id);
   };
@@ -114,7 +115,7 @@ void collide_rounded_solid(const ShapeView<S>& A, const ShapeView<S>& B, S margi
   }
   bool inside = false;
   const auto dist2 = [&](S t) {
-    const V3<S> x = P0 + t * D;
+    const Vec<3, S> x = P0 + t * D;
     bool in;
     return (closest_on_solid<S>(B.type, h, x, in) - x).squaredNorm();
   };
@@ -148,12 +149,12 @@ void collide_rounded_solid(const ShapeView<S>& A, const ShapeView<S>& B, S margi
     if (dist2(S(0)) <= dist2(t)) t = S(0);
     if (dist2(S(1)) < dist2(t)) t = S(1);
   }
-  const V3<S> pc = P0 + t * D;
-  const V3<S> q = closest_on_solid<S>(B.type, h, pc, inside);
+  const Vec<3, S> pc = P0 + t * D;
+  const Vec<3, S> q = closest_on_solid<S>(B.type, h, pc, inside);
   const S dist = (q - pc).norm();
   if (!inside && dist > r + margin) return;
   if (!inside && dist > S(1e-9)) {
-    const V3<S> n = (q - pc) / dist;  // from the capsule into the solid
+    const Vec<3, S> n = (q - pc) / dist;  // from the capsule into the solid
     if (segment) {
       if (box) {
         // A face region: exactly one coordinate clamped.
@@ -170,12 +171,12 @@ void collide_rounded_solid(const ShapeView<S>& A, const ShapeView<S>& B, S margi
           for (int j = 0; j < 3 && ok; ++j)
             if (j != k) ok = clip_slab<S>(P0[j], D[j], h[j], ta, tb);
           if (ok && tb - ta > S(1e-6)) {
-            V3<S> nf = V3<S>::Zero();
+            Vec<3, S> nf = Vec<3, S>::Zero();
             nf[k] = -sgn;
             const S ends[2] = {ta, tb};
             const int before = out.count;
             for (int i = 0; i < 2; ++i) {
-              V3<S> x = P0 + ends[i] * D;
+              Vec<3, S> x = P0 + ends[i] * D;
               const S sep = sgn * x[k] - h[k] - r;
               if (sep >= margin) continue;
               // The midpoint between the face (sgn h_k) and the capsule surface (sgn h_k + sep).
@@ -187,7 +188,7 @@ void collide_rounded_solid(const ShapeView<S>& A, const ShapeView<S>& B, S margi
         }
       } else {
         const S H = h[1], R = h[0];
-        const V3<S> u = D.normalized();
+        const Vec<3, S> u = D.normalized();
         if (std::abs(pc.z()) < H && std::abs(u.z()) > S(0.998)) {
           // Along the side: both ends of the part of the segment level with the cylinder.
           S ta = S(0), tb = S(1);
@@ -195,12 +196,12 @@ void collide_rounded_solid(const ShapeView<S>& A, const ShapeView<S>& B, S margi
             const S ends[2] = {ta, tb};
             const int before = out.count;
             for (int i = 0; i < 2; ++i) {
-              const V3<S> x = P0 + ends[i] * D;
+              const Vec<3, S> x = P0 + ends[i] * D;
               const S rho = std::sqrt(x.x() * x.x() + x.y() * x.y());
               if (rho < S(1e-9)) continue;
               const S sep = rho - R - r;
               if (sep >= margin) continue;
-              const V3<S> radial(x.x() / rho, x.y() / rho, S(0));
+              const Vec<3, S> radial(x.x() / rho, x.y() / rho, S(0));
               emit(x - radial * (r + S(0.5) * sep), -radial, sep, static_cast<std::uint32_t>(i));
             }
             if (out.count > before) return;
@@ -230,11 +231,11 @@ void collide_rounded_solid(const ShapeView<S>& A, const ShapeView<S>& B, S margi
               const S ends[2] = {ta, tb};
               const int before = out.count;
               for (int i = 0; i < 2; ++i) {
-                V3<S> x = P0 + ends[i] * D;
+                Vec<3, S> x = P0 + ends[i] * D;
                 const S sep = sgn * x.z() - H - r;
                 if (sep >= margin) continue;
                 x.z() = sgn * (H + S(0.5) * sep);
-                emit(x, V3<S>(S(0), S(0), -sgn), sep, static_cast<std::uint32_t>(i));
+                emit(x, Vec<3, S>(S(0), S(0), -sgn), sep, static_cast<std::uint32_t>(i));
               }
               if (out.count > before) return;
             }
@@ -268,23 +269,23 @@ void collide_rounded_solid(const ShapeView<S>& A, const ShapeView<S>& B, S margi
     // The side: from the point of the segment nearest the axis, radially out.
     const S a = D.x() * D.x() + D.y() * D.y();
     const S tm = a > S(1e-18) ? clamp<S>(-(P0.x() * D.x() + P0.y() * D.y()) / a, S(0), S(1)) : S(0);
-    const V3<S> x = P0 + tm * D;
+    const Vec<3, S> x = P0 + tm * D;
     const S rho = std::sqrt(x.x() * x.x() + x.y() * x.y());
     const S push = h[0] + r - rho;
     if (push < best) {
-      const V3<S> radial = rho > S(1e-9) ? V3<S>(x.x() / rho, x.y() / rho, S(0))
-                                         : any_perpendicular<S>(V3<S>(D.x(), D.y(), S(0)));
+      const Vec<3, S> radial = rho > S(1e-9) ? Vec<3, S>(x.x() / rho, x.y() / rho, S(0))
+                                             : any_perpendicular<S>(Vec<3, S>(D.x(), D.y(), S(0)));
       const S sep = -push;
       emit(x - radial * (r + S(0.5) * sep), -radial, sep, 3u);
       return;
     }
   }
   const S half = box ? h[best_k] : h[1];
-  V3<S> nf = V3<S>::Zero();
+  Vec<3, S> nf = Vec<3, S>::Zero();
   nf[best_k] = -best_sgn;
-  const V3<S> ends[2] = {P0, P1};
+  const Vec<3, S> ends[2] = {P0, P1};
   for (int i = 0; i < (segment ? 2 : 1); ++i) {
-    V3<S> x = ends[i];
+    Vec<3, S> x = ends[i];
     const S sep = best_sgn * x[best_k] - half - r;
     if (sep >= margin) continue;
     x[best_k] = best_sgn * (half + S(0.5) * sep);

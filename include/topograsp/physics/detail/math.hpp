@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
 /// Small fixed-size helpers of the physics module, templated over the scalar type (internal):
-/// rotations. The vector types V3, M3, clamp() and the closest-point kernel come from
-/// geometry/detail/closest.hpp.
+/// rotations. clamp() and the closest-point kernel come from geometry/detail/closest.hpp, a Pose in
+/// the scalar type from core/pose.hpp.
 #pragma once
 
 #include <cmath>
@@ -16,21 +16,9 @@ namespace topograsp::detail {
 template <class S>
 using Quat = Eigen::Quaternion<S>;
 
-/// The rotation of a Pose converted to the scalar type S.
-template <class S>
-[[nodiscard]] M3<S> rotation_of(const Pose& p) noexcept {
-  return p.rotation().template cast<S>();
-}
-
-/// The translation of a Pose converted to the scalar type S.
-template <class S>
-[[nodiscard]] V3<S> translation_of(const Pose& p) noexcept {
-  return p.translation().template cast<S>();
-}
-
 /// The unit quaternion of the rotation by the rotation vector \p v (angle |v| about v / |v|).
 template <class S>
-[[nodiscard]] Quat<S> exp_rotation(const V3<S>& v) noexcept {
+[[nodiscard]] Quat<S> exp_rotation(const Vec<3, S>& v) noexcept {
   const S angle = v.norm();
   if (angle < S(1e-6)) {
     // Second-order series of (cos(a/2), sin(a/2)/a * v), normalised below.
@@ -45,19 +33,19 @@ template <class S>
 
 /// The rotation vector (axis times angle in [0, pi]) of the rotation matrix \p R.
 template <class S>
-[[nodiscard]] V3<S> log_rotation(const M3<S>& R) noexcept {
+[[nodiscard]] Vec<3, S> log_rotation(const Mat<3, 3, S>& R) noexcept {
   const Eigen::AngleAxis<S> aa(R);
   return aa.axis() * aa.angle();
 }
 
 /// The angle (rad, in [0, pi]) of the rotation matrix \p R.
 template <class S>
-[[nodiscard]] S rotation_angle(const M3<S>& R) noexcept {
+[[nodiscard]] S rotation_angle(const Mat<3, 3, S>& R) noexcept {
   S c = (R.trace() - S(1)) * S(0.5);
   if (c > S(1)) c = S(1);
   if (c < S(-1)) c = S(-1);
   // acos loses precision near 0; atan2 of |axial part| and cos does not.
-  const V3<S> axial(R(2, 1) - R(1, 2), R(0, 2) - R(2, 0), R(1, 0) - R(0, 1));
+  const Vec<3, S> axial(R(2, 1) - R(1, 2), R(0, 2) - R(2, 0), R(1, 0) - R(0, 1));
   return std::atan2(S(0.5) * axial.norm(), c);
 }
 

@@ -11,19 +11,20 @@
 #include <vector>
 
 #include <topograsp/core/constants.hpp>
+#include <topograsp/core/eigen.hpp>
 #include <topograsp/core/error.hpp>
+#include <topograsp/core/pose.hpp>
 #include <topograsp/model/spec.hpp>
-#include <topograsp/physics/detail/math.hpp>
 
 namespace topograsp {
 
 /// The mass properties of a rigid body in its own frame.
 template <class S = double>
 struct MassProperties {
-  S mass = S(0);                              ///< kg
-  detail::V3<S> com = detail::V3<S>::Zero();  ///< centre of mass (m, body frame)
+  S mass = S(0);                      ///< kg
+  Vec<3, S> com = Vec<3, S>::Zero();  ///< centre of mass (m, body frame)
   /// Inertia tensor about the centre of mass, in body-frame axes (kg m^2).
-  detail::M3<S> inertia = detail::M3<S>::Zero();
+  Mat<3, 3, S> inertia = Mat<3, 3, S>::Zero();
 };
 
 /// Throws topograsp::invalid_argument naming \p argument unless \p s has positive, finite sizes
@@ -53,7 +54,7 @@ inline void require_valid_shape(const ShapeSpec& s, std::string_view argument) {
   for (double v : s.pose.R) require_finite(v, arg + ".pose");
   for (double v : s.pose.p) require_finite(v, arg + ".pose");
   const Mat3 R = s.pose.rotation();
-  if (!(R.transpose() * R).isApprox(Mat3::Identity(), 1e-6) || R.determinant() < 0.0)
+  if (!is_rotation(R))
     detail::throw_invalid_argument(arg + ".pose", "expected a rotation (orthonormal, det +1)");
 }
 
@@ -62,8 +63,6 @@ inline void require_valid_shape(const ShapeSpec& s, std::string_view argument) {
 /// face, moved by the parallel-axis theorem). Cylinder and capsule axes are the shape's local z.
 template <class S = double>
 [[nodiscard]] MassProperties<S> shape_mass_properties(const ShapeSpec& s, double density) {
-  using detail::M3;
-  using detail::V3;
   const double r = s.size[0];
   double m = 0.0, ixx = 0.0, iyy = 0.0, izz = 0.0;
   switch (s.type) {
@@ -103,8 +102,8 @@ template <class S = double>
   MassProperties<S> out;
   out.mass = static_cast<S>(m);
   out.com = detail::translation_of<S>(s.pose);
-  const M3<S> R = detail::rotation_of<S>(s.pose);
-  const V3<S> diag(static_cast<S>(ixx), static_cast<S>(iyy), static_cast<S>(izz));
+  const Mat<3, 3, S> R = detail::rotation_of<S>(s.pose);
+  const Vec<3, S> diag(static_cast<S>(ixx), static_cast<S>(iyy), static_cast<S>(izz));
   out.inertia = R * diag.asDiagonal() * R.transpose();
   return out;
 }
@@ -125,8 +124,6 @@ template <class S = double>
 [[nodiscard]] MassProperties<S> body_mass_properties(std::span<const ShapeSpec> shapes, double mass,
                                                      double density,
                                                      std::span<const double> shape_density = {}) {
-  using detail::M3;
-  using detail::V3;
   if (shapes.empty()) detail::throw_invalid_argument("shapes", "expected at least one shape");
   for (std::size_t i = 0; i < shapes.size(); ++i)
     require_valid_shape(shapes[i], "shapes[" + std::to_string(i) + "]");
@@ -159,7 +156,7 @@ template <class S = double>
       return per_shape ? shape_density[i] * rho_scale * rho : rho;
     };
     MassProperties<S> t;
-    V3<S> moment = V3<S>::Zero();
+    Vec<3, S> moment = Vec<3, S>::Zero();
     for (std::size_t i = 0; i < parts.size(); ++i) {
       const MassProperties<S> p = shape_mass_properties<S>(parts[i], rho_of(i));
       t.mass += p.mass;
@@ -169,9 +166,10 @@ template <class S = double>
     for (std::size_t i = 0; i < parts.size(); ++i) {
       const ShapeSpec& s = parts[i];
       const MassProperties<S> p = shape_mass_properties<S>(s, rho_of(i));
-      const V3<S> d = p.com - t.com;
+      const Vec<3, S> d = p.com - t.com;
       // Parallel-axis theorem: I_c + m (|d|^2 1 - d d^T).
-      t.inertia += p.inertia + p.mass * (d.squaredNorm() * M3<S>::Identity() - d * d.transpose());
+      t.inertia +=
+          p.inertia + p.mass * (d.squaredNorm() * Mat<3, 3, S>::Identity() - d * d.transpose());
     }
     return t;
   };
@@ -207,7 +205,7 @@ template <class S = double>
     if (std::isfinite(scale) && scale >= std::numeric_limits<S>::min())
       total.inertia *= scale;
     else  // the ratio leaves the range (a 1e300 kg body of 1 mm): per unit mass first
-      total.inertia = M3<S>(total.inertia / total.mass) * static_cast<S>(mass);
+      total.inertia = Mat<3, 3, S>(total.inertia / total.mass) * static_cast<S>(mass);
     total.mass = static_cast<S>(mass);
   }
   return total;
