@@ -26,7 +26,7 @@
 #ifdef TOPOGRASP_HAVE_MUJOCO
 #include <optional>
 
-#include <topograsp/io/mujoco_scene.hpp>
+#include <topograsp/mujoco/mujoco_scene.hpp>
 #endif
 
 using namespace topograsp;

@@ -17,7 +17,7 @@
 #   hand_kinematics         one imported hand's kinematics and the windings of its curves
 #   imported_hand_transfer  human demonstrations transferred to an imported hand by every method
 #   sdh_on_arm              the README tour's transfer: the SDH on the arm, transfer_topological
-#   grasp_transfer          the main example, examples/grasp_transfer.cpp
+#   grasp_transfer          the main example, apps/grasp_transfer/main.cpp
 #   test_<module>           a test module as CMake builds it (its files in one unity unit)
 # Nothing is built or run besides the compiler; objects go to a temporary folder.
 set -euo pipefail
@@ -49,7 +49,7 @@ echo "| --- | --- | --- |"
 for unit in "${units[@]}"; do
   extra=()
   case $unit in
-    grasp_transfer) source=$root/examples/grasp_transfer.cpp; extra=("${optional[@]}") ;;
+    grasp_transfer) source=$root/apps/grasp_transfer/main.cpp; extra=("${optional[@]}") ;;
     test_*)
       module=${unit#test_}
       if [[ ! -d $root/tests/$module ]]; then

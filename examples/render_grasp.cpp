@@ -19,10 +19,10 @@
 #include <topograsp/grasp/human_grasps.hpp>
 #include <topograsp/grasp/object.hpp>
 #include <topograsp/grasp/placement.hpp>
-#include <topograsp/io/html_page.hpp>
-#include <topograsp/io/svg_plot.hpp>
-#include <topograsp/io/svg_scene.hpp>
 #include <topograsp/model/models.hpp>
+#include <topograsp/render/html_page.hpp>
+#include <topograsp/render/svg_plot.hpp>
+#include <topograsp/render/svg_scene.hpp>
 #include <topograsp/task/winding_task.hpp>
 
 namespace {

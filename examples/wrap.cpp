@@ -11,8 +11,8 @@
 #include <string>
 #include <topograsp/aico.hpp>
 #include <topograsp/geometry/composite.hpp>
-#include <topograsp/io/svg_plot.hpp>
 #include <topograsp/model/models.hpp>
+#include <topograsp/render/svg_plot.hpp>
 #include <topograsp/task/collision_task.hpp>
 #include <topograsp/task/joint_limit_task.hpp>
 #include <topograsp/task/posture_task.hpp>

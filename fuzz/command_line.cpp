@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Fuzz target: grasp_transfer's command-line parser, parse_command_line() of
-// io/command_line.hpp. The bytes are split at NUL bytes into the arguments (as the program would
-// get them: a real argument never holds a NUL).
+// apps/grasp_transfer/command_line.hpp. The bytes are split at NUL bytes into the arguments (as the
+// program would get them: a real argument never holds a NUL).
 //
 // - Only topograsp::invalid_argument may escape, and its message starts with the offending option:
 //   one of the arguments given (or "argument" for an empty one), followed by ':' or ' '.
@@ -18,8 +18,8 @@
 #include <typeinfo>
 #include <vector>
 
+#include <grasp_transfer/command_line.hpp>
 #include <topograsp/core/error.hpp>
-#include <topograsp/io/command_line.hpp>
 
 #include "fuzz_input.hpp"
 

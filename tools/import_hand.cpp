@@ -9,8 +9,8 @@
 #include <string_view>
 #include <vector>
 
-#include <topograsp/io/detail/svg_text.hpp>
 #include <topograsp/io/hand_import.hpp>
+#include <topograsp/io/text_file.hpp>
 
 namespace {
 

@@ -15,8 +15,8 @@
 #include <string>
 
 #include <mujoco/mujoco.h>
-#include <topograsp/io/detail/svg_text.hpp>
 #include <topograsp/io/json.hpp>
+#include <topograsp/io/text_file.hpp>
 
 namespace {
 

@@ -1,10 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
-/// The grasp module: objects, box hypotheses, human demonstrations, the transfer methods and the
-/// experiment of the paper.
+/// The grasp module: objects, box hypotheses, human demonstrations and the transfer methods.
 #pragma once
 
-#include <topograsp/grasp/experiment.hpp>
 #include <topograsp/grasp/hand_axes.hpp>
 #include <topograsp/grasp/hand_grasp.hpp>
 #include <topograsp/grasp/human_grasps.hpp>

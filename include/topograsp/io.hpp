@@ -1,17 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
-/// The io module: JSON results, MJCF export, SVG plots and scene renderings, the results page.
+/// The io module: file formats. JSON, meshes (OBJ, STL, PLY), keypoint recordings, MJCF export,
+/// the YCB objects' files and the atomic text file writer. (Hand import from URDF and MJCF,
+/// io/hand_import.hpp, is included by the import tool only.)
 #pragma once
 
-#include <topograsp/io/html_page.hpp>
-#include <topograsp/io/journal.hpp>
 #include <topograsp/io/json.hpp>
 #include <topograsp/io/keypoint_grasp.hpp>
 #include <topograsp/io/mesh_file.hpp>
 #include <topograsp/io/mesh_write.hpp>
 #include <topograsp/io/mjcf.hpp>
-#include <topograsp/io/report.hpp>
-#include <topograsp/io/results.hpp>
-#include <topograsp/io/svg_plot.hpp>
-#include <topograsp/io/svg_scene.hpp>
+#include <topograsp/io/text_file.hpp>
 #include <topograsp/io/ycb_objects.hpp>

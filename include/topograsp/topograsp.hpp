@@ -13,4 +13,5 @@
 #include <topograsp/kinematics.hpp>
 #include <topograsp/model.hpp>
 #include <topograsp/physics.hpp>
+#include <topograsp/render.hpp>
 #include <topograsp/task.hpp>

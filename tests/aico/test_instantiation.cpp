@@ -3,8 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include <topograsp/aico.hpp>
-#include <topograsp/io/svg_plot.hpp>
 #include <topograsp/model/models.hpp>
+#include <topograsp/render/svg_plot.hpp>
 
 #include "stacks.hpp"
 #include "wrap_scene.hpp"

@@ -15,7 +15,7 @@
 #include "support/throws.hpp"
 
 #ifdef TOPOGRASP_HAVE_MUJOCO
-#include <topograsp/io/mujoco_scene.hpp>
+#include <topograsp/mujoco/mujoco_scene.hpp>
 #endif
 
 using namespace topograsp;

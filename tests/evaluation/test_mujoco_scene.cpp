@@ -10,7 +10,7 @@
 #include <string>
 
 #include <catch2/catch.hpp>
-#include <topograsp/io/mujoco_scene.hpp>
+#include <topograsp/mujoco/mujoco_scene.hpp>
 
 #include "support/throws.hpp"
 

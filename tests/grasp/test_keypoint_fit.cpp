@@ -10,7 +10,6 @@
 
 #include <catch2/catch.hpp>
 
-#include <topograsp/grasp/experiment.hpp>
 #include <topograsp/grasp/hypothesis.hpp>
 #include <topograsp/grasp/keypoint_fit.hpp>
 
@@ -94,40 +93,4 @@ TEST_CASE("demonstrate_recorded refuses a recording of another object",
   const KeypointGrasp k = human_keypoints(pose, "hammer");
   CHECK_THROWS_WITH(demonstrate_recorded(objects::bottle(), k, 0),
                     Catch::StartsWith("recorded.object: ") && Catch::Contains("\"hammer\""));
-}
-
-TEST_CASE("the experiment warns of a recording the hand fits badly or cannot be placed at",
-          "[grasp][keypoints][experiment]") {
-  // A hand 1.5 times the model's (every keypoint scaled about the wrist: a file in the wrong
-  // units would be off by far more) at the bottle, and a hand inside a 1 m crate, which backing
-  // off by the stand-off does not bring out.
-  HandGrasp<models::human_hand> pose;
-  pose.root.translation() = Vec3(-0.12, 0.0, 0.05);
-  KeypointGrasp large = human_keypoints(pose, "bottle");
-  for (Vec3& k : large.keypoints) k = large.keypoints[0] + 1.5 * (k - large.keypoints[0]);
-  HandGrasp<models::human_hand> centred;
-  const KeypointGrasp inside = human_keypoints(centred, "crate");
-  ExperimentOptions o;
-  o.objects = {objects::bottle(),
-               objects::detail::make(
-                   "crate", {{box("", at(0, 0, 0), {0.5, 0.5, 0.5}), materials::cardboard, 20.0}})};
-  o.methods = {TransferMethod::topological};
-  o.demonstrations = {{"large.json", large}, {"inside.json", inside}};
-  std::string warnings;
-  const std::vector<ObjectResult> r = run_experiment(o, [&](std::string_view line) {
-    if (line.starts_with("warning: ")) warnings += std::string(line) + "\n";
-  });
-  REQUIRE(r.size() == 2);
-  REQUIRE(r[0].human.size() == 1);
-  REQUIRE(r[0].human[0].fit_error);
-  CHECK(r[0].human[0].fit_error->max > k_keypoint_fit_warning);
-  REQUIRE(r[1].human.size() == 1);
-  CHECK_FALSE(r[1].human[0].reached);
-  CHECK(r[1].human[0].fit_error->max < 1e-3);  // a good fit, but no place for the hand
-  CHECK_THAT(warnings,
-             Catch::Contains("warning: [bottle] recording large.json (hypothesis 0): the human "
-                             "hand fits its keypoints only within") &&
-                 Catch::Contains("warning: [crate] recording inside.json (hypothesis 0): the "
-                                 "human hand cannot be placed at the object"));
-  CHECK_THAT(warnings, !Catch::Contains("inside.json (hypothesis 0): the human hand fits"));
 }

@@ -6,6 +6,8 @@
 
 #include <string_view>
 
+#include <topograsp/core/parameters.hpp>
+
 namespace topograsp {
 
 /// Which state AICO plans over (docs/aico.md, "The model").
@@ -104,5 +106,31 @@ struct AicoOptions {
   /// message from beyond T, the exact objective above) is the default.
   double terminal_precision = 0.0;
 };
+
+/// The numeric fields of AicoOptions with their valid ranges (AicoProblem checks them;
+/// process_noise only in dynamic mode).
+inline constexpr ParameterTable<AicoOptions, 14> aico_parameters{{
+    {"steps", &AicoOptions::steps, 1, k_max_aico_steps, "time steps T"},
+    {"duration", &AicoOptions::duration, 1e-6, 1e6, "s: duration of the motion"},
+    {"control_precision", &AicoOptions::control_precision, 0.0, 1e100, "control precision h", true},
+    {"process_noise", &AicoOptions::process_noise, 0.0, 1e100,
+     "process noise rate q (dynamic mode)", true},
+    {"damping", &AicoOptions::damping, 0.0, 1e100, "initial damping alpha"},
+    {"damping_increase", &AicoOptions::damping_increase, 1.0, 1e10,
+     "alpha's factor after a rejected sweep", true},
+    {"damping_decrease", &AicoOptions::damping_decrease, 1.0, 1e10,
+     "alpha's divisor after an accepted sweep"},
+    {"tolerance", &AicoOptions::tolerance, 0.0, unbounded, "rad: step tolerance", true},
+    {"max_step", &AicoOptions::max_step, 0.0, unbounded, "rad: largest relinearisation step", true},
+    {"cost_tolerance", &AicoOptions::cost_tolerance, 0.0, unbounded,
+     "relative cost decrease that ends the solve"},
+    {"max_sweeps", &AicoOptions::max_sweeps, 1, 1000000, "largest number of sweeps"},
+    {"max_rejections", &AicoOptions::max_rejections, 1, 1000000,
+     "rejected sweeps in a row that end the solve"},
+    {"local_iterations", &AicoOptions::local_iterations, 1, 1000,
+     "relocations per step and pass (local_gauss_newton)"},
+    {"terminal_precision", &AicoOptions::terminal_precision, 0.0, 1e100,
+     "precision of the terminal message"},
+}};
 
 }  // namespace topograsp

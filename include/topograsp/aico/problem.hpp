@@ -81,47 +81,9 @@ class AicoProblem {
 
  private:
   static void check_options(const AicoOptions& o) {
-    if (o.steps < 1 || o.steps > k_max_aico_steps)
-      detail::throw_invalid_argument("options.steps", "expected 1 to " +
-                                                          std::to_string(k_max_aico_steps) +
-                                                          " steps, got " + std::to_string(o.steps));
-    require_positive(o.duration, "options.duration");
-    require_at_most(o.duration, 1e6, "options.duration");
-    if (!(o.duration >= 1e-6))
-      detail::throw_invalid_argument("options.duration",
-                                     "expected at least 1e-6 s, got " + std::to_string(o.duration));
-    require_positive(o.control_precision, "options.control_precision");
-    require_at_most(o.control_precision, 1e100, "options.control_precision");
-    if constexpr (Mode == AicoMode::dynamic) {
-      require_positive(o.process_noise, "options.process_noise");
-      require_at_most(o.process_noise, 1e100, "options.process_noise");
-    }
-    require_non_negative(o.damping, "options.damping");
-    require_at_most(o.damping, 1e100, "options.damping");
-    if (!(o.damping_increase > 1.0) || !std::isfinite(o.damping_increase))
-      detail::throw_invalid_argument("options.damping_increase", "expected a finite number > 1");
-    if (!(o.damping_decrease >= 1.0) || !std::isfinite(o.damping_decrease))
-      detail::throw_invalid_argument("options.damping_decrease", "expected a finite number >= 1");
-    require_positive(o.tolerance, "options.tolerance");
-    require_positive(o.max_step, "options.max_step");
-    require_non_negative(o.cost_tolerance, "options.cost_tolerance");
-    require_at_most(o.damping_increase, 1e10, "options.damping_increase");
-    require_at_most(o.damping_decrease, 1e10, "options.damping_decrease");
-    if (o.max_sweeps < 1 || o.max_sweeps > 1000000)
-      detail::throw_invalid_argument("options.max_sweeps", "expected 1 to 1000000");
-    if (o.max_rejections < 1 || o.max_rejections > 1000000)
-      detail::throw_invalid_argument("options.max_rejections", "expected 1 to 1000000");
-    if (o.local_iterations < 1 || o.local_iterations > 1000)
-      detail::throw_invalid_argument("options.local_iterations", "expected 1 to 1000");
-    require_non_negative(o.terminal_precision, "options.terminal_precision");
-    require_at_most(o.terminal_precision, 1e100, "options.terminal_precision");
-  }
-  static void require_at_most(double value, double bound, std::string_view argument) {
-    if (!(value <= bound)) {
-      char buf[64];
-      std::snprintf(buf, sizeof buf, "expected at most %g, got %g", bound, value);
-      detail::throw_invalid_argument(argument, buf);
-    }
+    for (const Parameter<AicoOptions>& p : aico_parameters)
+      if (Mode == AicoMode::dynamic || p.name != "process_noise")
+        check_parameter(p, p.get(o), "options.");
   }
 
   Stack stack_;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <topograsp/core/constants.hpp>
+#include <topograsp/core/parameters.hpp>
 #include <topograsp/evaluation/hand_scene.hpp>
 
 namespace topograsp {
@@ -37,6 +38,18 @@ struct CloseOptions {
   /// crosses 100 degrees at the SDH's 100 degrees/s).
   int closing_steps = 60;
 };
+
+/// The numeric fields of CloseOptions with their valid ranges (close_hand() checks them).
+inline constexpr ParameterTable<CloseOptions, 5> close_parameters{{
+    {"step", &CloseOptions::step, 0.0, unbounded, "rad or m: the search's joint increment", true},
+    {"bisections", &CloseOptions::bisections, 0, 64, "bisections of each contact value"},
+    {"touch_distance", &CloseOptions::touch_distance, 0.0, unbounded,
+     "m: a link touches within this separation"},
+    {"hold_fraction", &CloseOptions::hold_fraction, 0.0, 1.0,
+     "the motors' fraction of their torque limits", true},
+    {"closing_steps", &CloseOptions::closing_steps, 1, 1000000,
+     "physics steps from first contact to the stall"},
+}};
 
 /// The most increments close_hand() takes per joint: CloseOptions::step must be at least the
 /// largest joint range of the model divided by this.
@@ -107,27 +120,15 @@ std::array<bool, std::remove_cvref_t<decltype(M)>::n_links> links_after_joint(in
 /// gravity restored: each closing joint's servo targets hold_targets() (it presses with
 /// hold_fraction of its limit where it stands, and resists a load stiffly up to its full limit);
 /// the moment closing ends, the reference of the stability tests. Works for any model whose joints
-/// have motors (HandScene); joints with closing 0 (abduction, a free base) keep their value. Throws
-/// topograsp::invalid_argument naming the option for a non-positive or non-finite step, a step
-/// below the largest joint range / k_max_close_increments (a finer search would take longer than
-/// any use warrants: 1e-8 rad would be 3e8 increments), a negative or non-finite touch_distance,
-/// bisections outside [0, 64], a hold_fraction outside (0, 1] or closing_steps outside [1,
-/// 1000000].
+/// have motors (HandScene); joints with closing 0 (abduction, a free base) keep their value.
+/// \throws topograsp::invalid_argument naming the option for a field outside its range
+/// (close_parameters), or a step below the largest joint range / k_max_close_increments (a finer
+/// search would take longer than any use warrants).
 template <const auto& M, class S>
 CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options = {}) {
   constexpr int nq = M.nq;
   using ModelType = std::remove_cvref_t<decltype(M)>;
-  require_positive(options.step, "options.step");
-  require_finite(options.touch_distance, "options.touch_distance");
-  if (!(options.hold_fraction > 0.0 && options.hold_fraction <= 1.0))
-    detail::throw_invalid_argument("options.hold_fraction", "expected a value in (0, 1]");
-  if (options.bisections < 0 || options.bisections > 64)
-    detail::throw_invalid_argument("options.bisections",
-                                   "expected 0 to 64, got " + std::to_string(options.bisections));
-  if (options.closing_steps < 1 || options.closing_steps > 1000000)
-    detail::throw_invalid_argument(
-        "options.closing_steps",
-        "expected 1 to 1000000, got " + std::to_string(options.closing_steps));
+  validate_parameters(options, close_parameters, "options.");
   const World<S>& world = scene.world();
   const RigidBody<S>& object = world.body(scene.object_body());
   const Eigen::Isometry3d hand = scene.hand_pose();

@@ -16,6 +16,7 @@
 
 #include <topograsp/core/constants.hpp>
 #include <topograsp/core/error.hpp>
+#include <topograsp/core/parameters.hpp>
 #include <topograsp/core/random.hpp>
 #include <topograsp/core/status.hpp>
 #include <topograsp/evaluation/grasp_scene.hpp>
@@ -78,6 +79,21 @@ struct StabilityOptions {
   /// (which directions it fails, how far the object went in each).
   bool every_test = false;
 };
+
+/// The numeric fields of StabilityOptions but the shakes, with their valid ranges
+/// (validate_stability_options checks them).
+inline constexpr ParameterTable<StabilityOptions, 5> stability_parameters{{
+    {"direction_steps", &StabilityOptions::direction_steps, 1, k_max_suite_steps,
+     "steps of each gravity direction"},
+    {"max_translation", &StabilityOptions::max_translation, 0.0, unbounded,
+     "m: the object's largest slip in the hand", true},
+    {"max_rotation", &StabilityOptions::max_rotation, 0.0, unbounded,
+     "rad: the object's largest turn in the hand", true},
+    {"touch_distance", &StabilityOptions::touch_distance, 0.0, unbounded,
+     "m: the object touches the hand within this separation"},
+    {"max_penetration", &StabilityOptions::max_penetration, 0.0, unbounded,
+     "m: the deepest overlap when closing ended", true},
+}};
 
 /// The tests of the suite, in the order of StabilityResult::tests.
 enum class StabilityTest : std::uint8_t {
@@ -280,23 +296,16 @@ class ShakePath {
 
 /// Checks \p options as stability_suite() does; error messages name the option after \p name
 /// ("options.shake.steps", or "transfer.sim.stability.shake.steps" with that \p name).
-/// \throws topograsp::invalid_argument naming the option for shake or direction steps outside
-/// [1, k_max_suite_steps] (the hard shake's [0, k_max_suite_steps]), rotations outside
-/// [1, k_max_suite_steps], angles not finite, beyond a full turn (2 pi) or with max_angle <
-/// min_angle, non-positive or non-finite thresholds (max_translation, max_rotation,
-/// max_penetration), a negative or non-finite touch_distance, or a pivot that is not a ShakePivot.
+/// \throws topograsp::invalid_argument naming the option for a field of stability_parameters
+/// outside its range, shake steps outside [1, k_max_suite_steps] (the hard shake's
+/// [0, k_max_suite_steps]), rotations outside [1, k_max_suite_steps], angles not finite, beyond a
+/// full turn (2 pi) or with max_angle < min_angle, or a pivot that is not a ShakePivot.
 inline void validate_stability_options(const StabilityOptions& options,
                                        std::string_view name = "options") {
   const std::string n(name);
   detail::require_shake_motion(options.shake, 1, n + ".shake");
-  detail::require_steps(options.direction_steps, 1, n + ".direction_steps");
   detail::require_shake_motion(options.hard_shake, 0, n + ".hard_shake");
-  require_positive(options.max_translation, n + ".max_translation");
-  require_positive(options.max_rotation, n + ".max_rotation");
-  require_positive(options.max_penetration, n + ".max_penetration");
-  require_finite(options.touch_distance, n + ".touch_distance");
-  if (options.touch_distance < 0.0)
-    detail::throw_invalid_argument(n + ".touch_distance", "expected >= 0 m");
+  validate_parameters(options, stability_parameters, n + ".");
   if (options.pivot != ShakePivot::palm && options.pivot != ShakePivot::object)
     detail::throw_invalid_argument(n + ".pivot", "expected palm or object");
 }

@@ -31,7 +31,7 @@ namespace topograsp {
 
 /// A judge of a closed grasp other than the built-in stepper: given the scene as closing left it
 /// and the stability options, the suite's verdict in that engine (grasp_transfer --judge sets
-/// MuJoCo's, MujocoScene in io/mujoco_scene.hpp).
+/// MuJoCo's, MujocoScene in mujoco/mujoco_scene.hpp).
 template <const auto& M>
 using SecondJudge = std::function<StabilityResult(const HandScene<M>&, const StabilityOptions&)>;
 

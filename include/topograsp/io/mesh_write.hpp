@@ -16,7 +16,7 @@
 
 #include <topograsp/core/error.hpp>
 #include <topograsp/geometry/mesh.hpp>
-#include <topograsp/io/detail/svg_text.hpp>
+#include <topograsp/io/text_file.hpp>
 
 namespace topograsp {
 

@@ -18,11 +18,10 @@ namespace topograsp {
 /// ids. Appends to \p out (which the caller clears). Exact for pairs of spheres and capsules, and
 /// for those against boxes and cylinders while the sphere's centre or the capsule's segment is
 /// outside the solid; once it is inside, the contact takes the shallowest face exit, which can be
-/// deeper than the true overlap and differently oriented (fuzz_narrow_phase found 8 % deeper and
-/// 55 degrees off). Box and cylinder pairs use the cylinder's prism (cylinder_prism_sides) and
-/// the face and edge-edge axes of the two polytopes, but not the cap-edge pairs of two prisms
-/// (two cylinders crossing at their rims: up to 48 % deeper). Never produces a NaN for finite
-/// input.
+/// deeper than the true overlap and differently oriented. Box and cylinder pairs use the
+/// cylinder's prism (cylinder_prism_sides) and the face and edge-edge axes of the two polytopes,
+/// but not the cap-edge pairs of two prisms. How far off these approximations are:
+/// docs/stepper.md. Never produces a NaN for finite input.
 template <class S>
 void collide(const ShapeView<S>& a, const ShapeView<S>& b, S margin, ContactSet<S>& out) noexcept {
   using namespace detail;

@@ -12,6 +12,7 @@
 
 #include <topograsp/aico/options.hpp>
 #include <topograsp/core/error.hpp>
+#include <topograsp/core/parameters.hpp>
 #include <topograsp/grasp/human_grasps.hpp>
 #include <topograsp/grasp/transfer_method.hpp>
 
@@ -73,26 +74,17 @@ struct TransferOptions {
   double virtual_finger_margin = 0.04;
   /// How far the transplant baseline opens the SDH before it is placed (rad): its proximal
   /// joints at -opening, its distal joints at +opening (the tips kept pointing inward), the
-  /// knuckle as in sdh_preshape (transplant_preshape). Default 0.7, the best of a sweep over
-  /// 0.3 to 1.1 on the hammer and the bottle, seeds 1 to 4 (docs/results.md): a baseline is
-  /// given its best setting, not one known to fail (sdh_preshape's 0.3 fails every bottle grasp).
+  /// knuckle as in sdh_preshape (transplant_preshape). How the default was chosen: docs/results.md.
   double transplant_opening = 0.7;
 };
 
-/// One numeric parameter of TransferOptions that a command line or a result file names: its name,
-/// its field, its valid range [min, max] (inclusive) and a one-line meaning with its unit.
-struct TransferParameter {
-  std::string_view name;
-  double TransferOptions::* field;
-  double min;
-  double max;
-  std::string_view meaning;
-};
+/// One numeric parameter of TransferOptions (core/parameters.hpp).
+using TransferParameter = Parameter<TransferOptions>;
 
 /// The numeric parameters of TransferOptions (grasp_transfer --set NAME=VALUE; the "transfer"
 /// object of results.json), each with the range set_transfer_parameter accepts. Lengths are in
 /// m, precisions are task weights (per m^2 for the line task); 0 switches a task's term off.
-inline constexpr std::array<TransferParameter, 15> transfer_parameters{{
+inline constexpr ParameterTable<TransferOptions, 15> transfer_parameters{{
     {"backoff", &TransferOptions::backoff, 0.0, 0.3,
      "m: the human grasp centre's start beyond the SDH's, along the approach"},
     {"winding_precision_mid", &TransferOptions::winding_precision_mid, 0.0, 1e6,
@@ -126,51 +118,21 @@ inline constexpr std::array<TransferParameter, 15> transfer_parameters{{
 /// The entry of transfer_parameters called \p name, or nullptr.
 [[nodiscard]] constexpr const TransferParameter* find_transfer_parameter(
     std::string_view name) noexcept {
-  for (const TransferParameter& p : transfer_parameters)
-    if (p.name == name) return &p;
-  return nullptr;
+  return find_parameter(transfer_parameters, name);
 }
-
-namespace detail {
-// "[0, 0.3]": a parameter's range as the messages and --help print it.
-inline std::string parameter_range(const TransferParameter& p) {
-  char b[64];
-  std::snprintf(b, sizeof b, "[%g, %g]", p.min, p.max);
-  return b;
-}
-// Throws naming the parameter unless v is in p's range (NaN is not).
-inline void check_parameter_value(const TransferParameter& p, double v) {
-  if (!(v >= p.min && v <= p.max)) {
-    char got[32];
-    std::snprintf(got, sizeof got, "%g", v);
-    throw_invalid_argument(p.name, "must be in " + parameter_range(p) + " (" +
-                                       std::string(p.meaning) + "), got " + got);
-  }
-}
-}  // namespace detail
 
 /// Sets the parameter called \p name (one of transfer_parameters) of \p options to \p value.
 /// \throws topograsp::invalid_argument naming "name" (unknown; the message lists the names) or
 /// the parameter (\p value outside its range, or not finite; the message gives the range);
 /// \p options is unchanged then.
 inline void set_transfer_parameter(TransferOptions& options, std::string_view name, double value) {
-  if (const TransferParameter* p = find_transfer_parameter(name)) {
-    detail::check_parameter_value(*p, value);
-    options.*(p->field) = value;
-    return;
-  }
-  std::string names;
-  for (const TransferParameter& p : transfer_parameters)
-    names += (names.empty() ? "" : ", ") + std::string(p.name);
-  detail::throw_invalid_argument("name", "unknown transfer parameter \"" + std::string(name) +
-                                             "\" (expected one of " + names + ")");
+  set_parameter(options, transfer_parameters, name, value, "transfer parameter");
 }
 
 /// Checks every parameter of transfer_parameters in \p options against its range.
 /// \throws topograsp::invalid_argument naming the first parameter out of range.
 inline void validate_transfer_parameters(const TransferOptions& options) {
-  for (const TransferParameter& p : transfer_parameters)
-    detail::check_parameter_value(p, options.*(p.field));
+  validate_parameters(options, transfer_parameters);
 }
 
 /// \p options as the topological variant \p method runs with (see TransferMethod): the paper's

@@ -1,0 +1,397 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// The paper's experiment (section IV, Table I) as a library call: human demonstrations on each
+/// object's box hypotheses, the stable ones transferred to the SDH by each method, every result
+/// judged by the stability suite; in parallel, sharded, reproducible. run_experiment is a
+/// template with nothing to give (`template <class = void>`), instantiated only where it is
+/// called (docs/architecture.md, "Compile time").
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <string>
+#include <string_view>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include <topograsp/core/random.hpp>
+#include <topograsp/grasp/keypoint_fit.hpp>
+#include <topograsp/grasp/transfer.hpp>
+
+namespace topograsp {
+
+/// Which simulator judges a grasp's stability: the built-in stepper, MuJoCo
+/// (mujoco/mujoco_scene.hpp, only where MuJoCo is linked), or both.
+enum class Judge : std::uint8_t { builtin, mujoco, both };
+
+/// The name of \p j ("builtin", "mujoco", "both").
+[[nodiscard]] constexpr std::string_view to_string(Judge j) noexcept {
+  switch (j) {
+    case Judge::builtin:
+      return "builtin";
+    case Judge::mujoco:
+      return "mujoco";
+    case Judge::both:
+      return "both";
+  }
+  return "unknown";
+}
+
+/// A recorded human grasp and where it comes from (a file's path, for the records).
+struct RecordedGrasp {
+  std::string source;
+  KeypointGrasp grasp;
+};
+
+/// What to run.
+struct ExperimentOptions {
+  std::vector<GraspObject> objects;     ///< default: the paper's hammer and bottle
+  std::vector<TransferMethod> methods;  ///< default: all three
+  int jobs = 1;                         ///< worker threads (>= 1)
+  std::uint64_t seed = 1;               ///< seeds every stability suite (see grasp_seed)
+  int shard_index = 0;                  ///< run hypotheses with id % shard_count == shard_index
+  int shard_count = 1;
+  int max_hypotheses = 0;  ///< if > 0, only the first this many hypotheses of each object
+  TransferOptions transfer{};
+  /// Which engine judges each grasp (grasp_transfer --judge). builtin: the built-in stepper;
+  /// mujoco or both need transfer.sim's second judges set (grasp_transfer sets MuJoCo's): with
+  /// both, the built-in decides and MuJoCo's verdict is recorded beside it; with mujoco, MuJoCo's
+  /// decides (transfer.sim.second_judge_decides) and the built-in's is recorded.
+  Judge judge = Judge::builtin;
+  /// Hypotheses not to run, as (object name, hypothesis id): those an earlier run into the same
+  /// output folder has done (grasp_transfer --resume). They are left out of the results
+  /// (ObjectResult::hypotheses does not count them); the caller has their records.
+  std::vector<std::pair<std::string, int>> skip;
+  /// Recorded human grasps (grasp_transfer --demonstrations): when not empty they are the
+  /// demonstrations in place of the planned ones, each judged as demonstrate_recorded() says and
+  /// transferred if stable; an object's k-th recording (in this order) is its hypothesis k. Every
+  /// recording's object must be one of `objects`.
+  std::vector<RecordedGrasp> demonstrations;
+};
+
+/// The numbers of one method on one object.
+struct MethodSummary {
+  TransferMethod method = TransferMethod::topological;
+  int tested = 0;  ///< stable human grasps transferred
+  int stable = 0;  ///< transfers that the stability suite called stable
+  [[nodiscard]] double rate() const noexcept {
+    return tested > 0 ? static_cast<double>(stable) / tested : 0.0;
+  }
+};
+
+/// Everything measured on one object.
+struct ObjectResult {
+  GraspObject object;
+  int hypotheses = 0;                               ///< hypotheses run (after sharding)
+  std::vector<HumanGrasp> human;                    ///< every demonstration, in id order
+  std::vector<MethodSummary> methods;               ///< in options.methods order
+  std::vector<std::vector<SdhTransfer>> transfers;  ///< [method][k]: the k-th stable human grasp
+  std::vector<int> transferred_ids;                 ///< the human grasp id of each k
+  [[nodiscard]] int stable_human() const noexcept {
+    return static_cast<int>(transferred_ids.size());
+  }
+};
+
+/// The verdicts of method \p m (an index into \p r.methods) on each stable human grasp of \p r,
+/// in the order of r.transferred_ids: by the engine that decides (\p second_judge false) or by
+/// the second judge (true). A transfer that was not planned fails in both; a planned one without
+/// a second verdict (no second judge in the run) fails in the second. Every method's vector has
+/// the same grasps in the same order, so two of them are paired (compare_paired).
+/// \throws topograsp::invalid_argument for m out of range.
+[[nodiscard]] inline std::vector<bool> method_outcomes(const ObjectResult& r, std::size_t m,
+                                                       bool second_judge) {
+  if (m >= r.transfers.size())
+    detail::throw_invalid_argument(
+        "m", "expected a method index below " + std::to_string(r.transfers.size()));
+  std::vector<bool> out;
+  out.reserve(r.transfers[m].size());
+  for (const SdhTransfer& t : r.transfers[m])
+    out.push_back(second_judge ? t.planned && t.second && t.second->stable : t.stable());
+  return out;
+}
+
+/// The 64-bit FNV-1a hash of \p text.
+[[nodiscard]] constexpr std::uint64_t fnv1a_64(std::string_view text) noexcept {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (const char c : text) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 0x100000001b3ull;
+  }
+  return h;
+}
+
+/// The seed of the stability suite of grasp \p id of the object called \p object: the object's
+/// name hashed (FNV-1a), then a SplitMix64 mix. The human demonstration and every method's transfer
+/// of it share the seed, so every method meets the same shake, the same six directions and the
+/// same hard shake on the same human grasp (a paired comparison, McNemar's test). A grasp's random
+/// stream depends only on what it is, never on the order, the threads, the other objects of the
+/// run or the shard, so any split of a run reproduces the whole.
+[[nodiscard]] constexpr std::uint64_t grasp_seed(std::uint64_t seed, std::string_view object,
+                                                 int id) noexcept {
+  return detail::splitmix64_mix(seed ^ detail::splitmix64_mix(fnv1a_64(object)) ^
+                                (0xbf58476d1ce4e5b9ull * static_cast<std::uint64_t>(id + 1)));
+}
+
+namespace detail {
+
+// Starts a std::thread running f: the default thread factory of parallel_for.
+struct StartStdThread {
+  template <class F>
+  std::thread operator()(F&& f) const {
+    return std::thread(std::forward<F>(f));
+  }
+};
+
+// Runs body(i) for i in [0, n) on up to `jobs` threads, the calling thread one of them; each index
+// at most once; after an exception of body no thread starts a new index, and the first exception
+// is rethrown after every thread has been joined. Threads come
+// from start_thread(worker) (a std::thread); if starting one throws (std::system_error when the
+// system has no more threads, std::bad_alloc), no more are started and the work goes on with the
+// threads that did start (the calling thread always works), so a failed start never ends in
+// std::terminate. Returns the number of threads that ran, and the start's error in *start_error.
+template <class StartThread = StartStdThread>
+int parallel_for(int n, int jobs, const std::function<void(int)>& body,
+                 StartThread&& start_thread = {}, std::string* start_error = nullptr) {
+  std::atomic<int> next{0};
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  const auto worker = [&] {
+    for (int i = next++; i < n; i = next++) {
+      try {
+        body(i);
+      } catch (...) {
+        const std::lock_guard lock(error_mutex);
+        if (!error) error = std::current_exception();
+        next = n;  // no new work: the run has failed
+      }
+    }
+  };
+  std::vector<std::thread> threads;
+  const int wanted = std::min(jobs, n);
+  try {
+    threads.reserve(static_cast<std::size_t>(std::max(wanted - 1, 0)));
+    for (int t = 1; t < wanted; ++t) threads.push_back(start_thread(worker));
+  } catch (const std::exception& e) {
+    if (start_error != nullptr) *start_error = e.what();
+  } catch (...) {
+    if (start_error != nullptr) *start_error = "unknown error";
+  }
+  worker();
+  for (std::thread& t : threads) t.join();
+  if (error) std::rethrow_exception(error);
+  return static_cast<int>(threads.size()) + 1;
+}
+
+}  // namespace detail
+
+/// Called with a line of progress (no newline) as the experiment runs; may be called from
+/// worker threads, one call at a time.
+using ProgressFn = std::function<void(std::string_view)>;
+
+/// Called once for each hypothesis when it is done: the object, the demonstration, and each
+/// method's transfer of it in options.methods order (empty when the demonstration was not
+/// stable). From worker threads, one call at a time, in no fixed order (grasp_transfer journals
+/// each hypothesis so that --resume can skip it). An exception it throws ends the run.
+using HypothesisDoneFn =
+    std::function<void(const GraspObject&, const HumanGrasp&, const std::vector<SdhTransfer>&)>;
+
+namespace detail {
+// run_experiment with the threads started by start_thread (a test seam, see parallel_for).
+template <class StartThread>
+std::vector<ObjectResult> run_experiment_with(const ExperimentOptions& options,
+                                              const ProgressFn& progress,
+                                              const HypothesisDoneFn& on_done,
+                                              StartThread&& start_thread);
+}  // namespace detail
+
+/// Checks \p options as run_experiment does before any work.
+/// \throws topograsp::invalid_argument naming the field for jobs < 1, a bad shard,
+/// max_hypotheses < 0, an empty object or method list, an object (by name) or a method given twice
+/// (their scenes would overwrite each other), an invalid object, or a transfer parameter outside
+/// its range (validate_transfer_parameters), a negative or non-finite transfer.sim.friction, a
+/// hold fraction outside (0, 1] (transfer.sim.close.hold_fraction, human_hold_fraction),
+/// bad stability options (validate_stability_options, named "transfer.sim.stability.<option>"),
+/// or a skipped hypothesis of an object that is not in the run.
+inline void validate_experiment_options(const ExperimentOptions& options) {
+  if (options.jobs < 1) detail::throw_invalid_argument("jobs", "expected at least 1");
+  if (options.shard_count < 1 || options.shard_index < 0 ||
+      options.shard_index >= options.shard_count)
+    detail::throw_invalid_argument("shard", "expected 0 <= index < count");
+  if (options.max_hypotheses < 0)
+    detail::throw_invalid_argument("max_hypotheses", "expected >= 0 (0: all)");
+  if (options.objects.empty()) detail::throw_invalid_argument("objects", "expected at least one");
+  if (options.methods.empty()) detail::throw_invalid_argument("methods", "expected at least one");
+  for (std::size_t i = 0; i < options.objects.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (options.objects[i].name == options.objects[j].name)
+        detail::throw_invalid_argument(
+            "objects", "\"" + options.objects[i].name + "\" is given twice (each object once)");
+  for (std::size_t i = 0; i < options.methods.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (options.methods[i] == options.methods[j])
+        detail::throw_invalid_argument("methods", "\"" +
+                                                      std::string(to_string(options.methods[i])) +
+                                                      "\" is given twice (each method once)");
+  for (const GraspObject& o : options.objects) o.validate();
+  for (std::size_t i = 0; i < options.demonstrations.size(); ++i) {
+    const std::string& name = options.demonstrations[i].grasp.object;
+    if (std::none_of(options.objects.begin(), options.objects.end(),
+                     [&](const GraspObject& o) { return o.name == name; }))
+      detail::throw_invalid_argument("demonstrations[" + std::to_string(i) + "].object",
+                                     "\"" + name + "\" (" + options.demonstrations[i].source +
+                                         ") is not an object of the run");
+  }
+  validate_transfer_parameters(options.transfer);
+  require_non_negative(options.transfer.sim.friction, "transfer.sim.friction");
+  const GraspSimOptions& sim = options.transfer.sim;
+  const bool second = sim.second_judge_human && sim.second_judge_sdh;
+  if (options.judge != Judge::builtin && !second)
+    detail::throw_invalid_argument(
+        "judge", "--judge " + std::string(to_string(options.judge)) +
+                     " needs a second judge (transfer.sim.second_judge_human and _sdh)");
+  if (options.judge == Judge::builtin && (sim.second_judge_human || sim.second_judge_sdh))
+    detail::throw_invalid_argument(
+        "judge", "builtin, but a second judge is set (transfer.sim.second_judge_*)");
+  if (sim.second_judge_decides != (options.judge == Judge::mujoco))
+    detail::throw_invalid_argument("transfer.sim.second_judge_decides",
+                                   "expected true exactly when judge is mujoco");
+  for (const auto& [f, name] :
+       {std::pair{options.transfer.sim.close.hold_fraction, "transfer.sim.close.hold_fraction"},
+        std::pair{options.transfer.sim.human_hold_fraction, "transfer.sim.human_hold_fraction"}})
+    if (!(f > 0.0 && f <= 1.0)) detail::throw_invalid_argument(name, "expected a value in (0, 1]");
+  validate_stability_options(options.transfer.sim.stability, "transfer.sim.stability");
+  for (const std::pair<std::string, int>& s : options.skip)
+    if (std::none_of(options.objects.begin(), options.objects.end(),
+                     [&](const GraspObject& o) { return o.name == s.first; }))
+      detail::throw_invalid_argument("skip", "object \"" + s.first + "\" (hypothesis " +
+                                                 std::to_string(s.second) + ") is not in the run");
+}
+
+/// Runs the experiment described by \p options. Throws topograsp::invalid_argument naming the
+/// field, before any work, for the options validate_experiment_options refuses. Each hypothesis
+/// (of every object, but those in options.skip; or each recorded grasp of options.demonstrations)
+/// is one task: its demonstration, then, if stable,
+/// each method's transfer of it; \p on_done is called when it is done. Results are identical for
+/// equal options whatever the number of jobs, and a grasp's result does not depend on the other
+/// objects or the shard (grasp_seed). If fewer than \p options.jobs threads can be started, the
+/// run goes on with those that did (at least the calling thread) and says so once through
+/// \p progress, in a line that starts with "warning: ".
+template <class = void>
+[[nodiscard]] std::vector<ObjectResult> run_experiment(const ExperimentOptions& options,
+                                                       const ProgressFn& progress = {},
+                                                       const HypothesisDoneFn& on_done = {}) {
+  return detail::run_experiment_with(options, progress, on_done, detail::StartStdThread{});
+}
+
+template <class StartThread>
+std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& options,
+                                                      const ProgressFn& progress,
+                                                      const HypothesisDoneFn& on_done,
+                                                      StartThread&& start_thread) {
+  validate_experiment_options(options);
+  std::mutex report_mutex;  // progress and on_done: one call at a time
+  const auto say = [&](const std::string& line) {
+    if (!progress) return;
+    const std::lock_guard lock(report_mutex);
+    progress(line);
+  };
+  // Every task: (object index, hypothesis id), objects in order, ids ascending.
+  const std::size_t no = options.objects.size(), nm = options.methods.size();
+  std::vector<std::vector<GraspHypothesis>> hyps(no);
+  std::vector<std::vector<const RecordedGrasp*>> recorded(no);
+  std::vector<std::pair<std::size_t, int>> tasks;
+  std::vector<ObjectResult> results(no);
+  std::vector<std::vector<std::size_t>> task_of(no);  // [object][k]: the task of its k-th id
+  for (std::size_t oi = 0; oi < no; ++oi) {
+    results[oi].object = options.objects[oi];
+    if (options.demonstrations.empty()) hyps[oi] = box_hypotheses(options.objects[oi]);
+    for (const RecordedGrasp& r : options.demonstrations)
+      if (r.grasp.object == options.objects[oi].name) recorded[oi].push_back(&r);
+    const int n =
+        static_cast<int>(options.demonstrations.empty() ? hyps[oi].size() : recorded[oi].size());
+    for (int i = 0; i < n; ++i) {
+      if (i % options.shard_count != options.shard_index ||
+          (options.max_hypotheses > 0 && i >= options.max_hypotheses))
+        continue;
+      const std::pair<std::string, int> key{options.objects[oi].name, i};
+      if (std::find(options.skip.begin(), options.skip.end(), key) != options.skip.end()) continue;
+      task_of[oi].push_back(tasks.size());
+      tasks.emplace_back(oi, i);
+    }
+    results[oi].hypotheses = static_cast<int>(task_of[oi].size());
+  }
+  std::vector<HumanGrasp> human(tasks.size());
+  std::vector<std::vector<SdhTransfer>> transfers(tasks.size());
+  std::atomic<int> done{0}, stable_done{0};
+  std::string start_error;
+  const int ran = detail::parallel_for(
+      static_cast<int>(tasks.size()), options.jobs,
+      [&](int k) {
+        const auto [oi, id] = tasks[static_cast<std::size_t>(k)];
+        const GraspObject& object = options.objects[oi];
+        TransferOptions transfer_options = options.transfer;
+        transfer_options.sim.stability.seed = grasp_seed(options.seed, object.name, id);
+        HumanGrasp& g = human[static_cast<std::size_t>(k)];
+        const auto i = static_cast<std::size_t>(id);
+        g = recorded[oi].empty()
+                ? demonstrate(object, hyps[oi][i], id, transfer_options.sim)
+                : demonstrate_recorded(object, recorded[oi][i]->grasp, id, transfer_options.sim);
+        if (!recorded[oi].empty()) {
+          const std::string which = "warning: [" + object.name + "] recording " +
+                                    recorded[oi][i]->source + " (hypothesis " + std::to_string(id) +
+                                    "): ";
+          if (g.fit_error && !(g.fit_error->max <= k_keypoint_fit_warning))
+            say(which + "the human hand fits its keypoints only within " +
+                std::to_string(g.fit_error->max) +
+                " m (check its units, frame and keypoint order)");
+          if (!g.reached)
+            say(which +
+                "the human hand cannot be placed at the object along its palm's approach "
+                "from the recorded pose; no record");
+        }
+        std::vector<SdhTransfer>& t = transfers[static_cast<std::size_t>(k)];
+        if (g.stable()) {
+          for (const TransferMethod m : options.methods)
+            t.push_back(transfer(m, object, g, transfer_options));
+          ++stable_done;
+        }
+        if (on_done) {
+          const std::lock_guard lock(report_mutex);
+          on_done(object, g, t);
+        }
+        say("[" + object.name + "] hypothesis " + std::to_string(id) + " done (" +
+            std::to_string(++done) + "/" + std::to_string(tasks.size()) + ", " +
+            std::to_string(stable_done.load()) + " stable demonstrations transferred)");
+      },
+      start_thread, &start_error);
+  if (!start_error.empty())
+    say("warning: could start only " + std::to_string(ran) + " of " +
+        std::to_string(
+            std::min<std::size_t>(static_cast<std::size_t>(options.jobs), tasks.size())) +
+        " threads (" + start_error + "); the run goes on with " + std::to_string(ran));
+  for (std::size_t oi = 0; oi < no; ++oi) {
+    ObjectResult& res = results[oi];
+    res.transfers.assign(nm, {});
+    for (const std::size_t k : task_of[oi]) {
+      res.human.push_back(std::move(human[k]));
+      if (!res.human.back().stable()) continue;
+      res.transferred_ids.push_back(res.human.back().id);
+      for (std::size_t m = 0; m < nm; ++m) res.transfers[m].push_back(std::move(transfers[k][m]));
+    }
+    for (std::size_t m = 0; m < nm; ++m) {
+      MethodSummary summary;
+      summary.method = options.methods[m];
+      summary.tested = res.stable_human();
+      for (const SdhTransfer& r : res.transfers[m]) summary.stable += r.stable() ? 1 : 0;
+      res.methods.push_back(summary);
+    }
+  }
+  return results;
+}
+
+}  // namespace topograsp

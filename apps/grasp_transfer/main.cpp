@@ -1,0 +1,331 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// grasp_transfer: the paper's experiment. Generates the human grasps on the objects, keeps the
+// stable ones, transfers them to the Schunk SDH with each method, tests every result, and prints
+// the paper's Table I beside its own; writes DIR/results.json and DIR/scenes/*.xml (MJCF), and
+// with --figures DIR/figures/*.svg and DIR/index.html, through a staging folder committed at the
+// end (apps/grasp_transfer/output_folder.hpp). The command line is parse_command_line
+// (apps/grasp_transfer/command_line.hpp).
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <grasp_transfer/command_line.hpp>
+#include <grasp_transfer/experiment.hpp>
+#include <grasp_transfer/journal.hpp>
+#include <grasp_transfer/output_folder.hpp>
+#include <grasp_transfer/report.hpp>
+#include <grasp_transfer/results.hpp>
+#include <topograsp/evaluation/statistics.hpp>
+#ifdef TOPOGRASP_HAVE_MUJOCO
+#include <topograsp/mujoco/mujoco_scene.hpp>
+#endif
+
+namespace {
+
+using namespace topograsp;
+
+// "62% [36, 82]": a rate with its 95 % Wilson interval, in percent.
+std::string percent(const Json& stable, const Json& tested, const Json& interval) {
+  if (tested.as_number() == 0.0) return "-";
+  const auto& i = interval.as_array();
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.0f%% [%.0f, %.0f]",
+                100.0 * stable.as_number() / tested.as_number(), 100.0 * i[0].as_number(),
+                100.0 * i[1].as_number());
+  return buf;
+}
+
+// The paper's Table I next to ours, one column per object (and one over all objects), from
+// results.json's summaries; with a second judge its rates too; then each method against the
+// topological one on the same grasps (McNemar's exact test).
+void print_table(const Json& doc) {
+  const Json& config = doc.at("config");
+  // One column per object, then one over every object when there are several.
+  std::vector<const Json*> objects;
+  for (const Json& o : doc.at("objects").as_array()) objects.push_back(&o);
+  if (objects.size() > 1 && doc.contains("overall")) objects.push_back(&doc.at("overall"));
+  const auto paper = [](const std::string& object, int row) -> std::string {
+    // Table I of the paper: hammer, bottle; rows: grasps, stable, autoclose, topological.
+    if (object == "hammer")
+      return std::array<const char*, 4>{"101", "67", "13%", "53%"}[static_cast<std::size_t>(row)];
+    if (object == "bottle")
+      return std::array<const char*, 4>{"151", "32", "25%", "63%"}[static_cast<std::size_t>(row)];
+    return "-";
+  };
+  const auto label = [](const std::string& m) -> std::string {
+    return m == "transplant"        ? "Autoclose (transplant)"
+           : m == "topological"     ? "Topological synergies"
+           : m == "fingertip"       ? "Fingertip mapping"
+           : m == "virtual_finger"  ? "Virtual-finger mapping"
+           : m == "paper"           ? "Topological, as in the paper"
+           : m == "paper_line"      ? "  paper + line task"
+           : m == "paper_approach"  ? "  paper + final approach"
+           : m == "no_windings"     ? "  topological, no windings"
+           : m == "nearest_point"   ? "  topological, nearest point"
+           : m == "closed_windings" ? "  topological, closed windings"
+                                    : m;
+  };
+  const auto header = [&](const std::string& title) {
+    std::printf("\n%-44s", title.c_str());
+    for (const Json* o : objects) std::printf(" %26s", o->at("name").as_string().c_str());
+    std::printf("\n");
+  };
+  const auto row = [&](const std::string& text, const auto& cell) {
+    std::printf("%-44s", text.c_str());
+    for (const Json* o : objects) std::printf(" %26s", cell(*o).c_str());
+    std::printf("\n");
+  };
+  const std::string judge = config.at("judge").as_string();
+  const bool second = judge != "builtin";
+  const std::string first_name = judge == "mujoco" ? "MuJoCo" : "built-in";
+  const std::string second_name = judge == "mujoco" ? "built-in" : "MuJoCo";
+  std::vector<std::string> methods;
+  for (const Json& m : config.at("methods").as_array()) methods.push_back(m.as_string());
+  const auto summary = [](const Json& o, const std::string& m) -> const Json& {
+    return o.at("methods").at(m);
+  };
+  header("TABLE I (paper | " + first_name + ", 95% CI)");
+  row("Total number of grasps", [&](const Json& o) {
+    return paper(o.at("name").as_string(), 0) + " | " + o.at("hypotheses").dump(0);
+  });
+  row("Stable grasps", [&](const Json& o) {
+    return paper(o.at("name").as_string(), 1) + " | " + o.at("stable_human").dump(0);
+  });
+  for (const std::string& m : methods) {
+    const int paper_row = m == "transplant" ? 2 : m == "topological" || m == "paper" ? 3 : -1;
+    row(label(m), [&](const Json& o) {
+      const Json& s = summary(o, m);
+      return (paper_row >= 0 ? paper(o.at("name").as_string(), paper_row) : "-") + " | " +
+             percent(s.at("stable"), s.at("tested"), s.at("interval"));
+    });
+  }
+  if (second) {
+    header("The same grasps judged by " + second_name + " (95% CI)");
+    row("Stable grasps", [&](const Json& o) {
+      const Json& j = o.at("human").at("second_judge");
+      return j.is_null() ? std::string("-") : j.at("stable_second").dump(0);
+    });
+    for (const std::string& m : methods)
+      row(label(m), [&](const Json& o) {
+        const Json& s = summary(o, m);
+        const Json& j = s.at("second_judge");
+        return j.is_null()
+                   ? std::string("-")
+                   : percent(j.at("stable_second"), s.at("tested"), j.at("interval_second"));
+      });
+  }
+  if (std::find(methods.begin(), methods.end(), "topological") == methods.end() ||
+      methods.size() < 2)
+    return;
+  header("Against topological, same grasps:");
+  std::printf("(held by this method only | by topological only, McNemar's exact p)\n");
+  for (const std::string& m : methods) {
+    if (m == "topological") continue;
+    for (const char* key : {"paired", "paired_second"}) {
+      if (key == std::string_view("paired_second") && !second) continue;
+      const std::string engine =
+          !second ? "" : ", " + (key == std::string_view("paired") ? first_name : second_name);
+      row(label(m) + engine, [&](const Json& o) {
+        const Json& c = summary(o, m).at(key);
+        if (c.is_null()) return std::string("-");
+        char buf[48];
+        std::snprintf(buf, sizeof buf, "%s | %s, p = %.2g", c.at("only_this").dump(0).c_str(),
+                      c.at("only_against").dump(0).c_str(), c.at("p_value").as_number());
+        return std::string(buf);
+      });
+    }
+  }
+}
+
+// The text of the file at path, or an error naming what.
+std::string read_file(const std::filesystem::path& path, const std::string& what) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw invalid_argument(what + ": cannot read \"" + path.string() + "\"");
+  return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+}
+
+// Copies the scene files of records from the folder from into the folder to (both hold scenes/).
+void copy_scenes(const std::vector<Json>& records, const std::filesystem::path& from,
+                 const std::filesystem::path& to) {
+  namespace fs = std::filesystem;
+  fs::create_directories(to / "scenes");
+  for (const Json& r : records) {
+    if (!r.at("scene").is_string()) continue;
+    const std::string& scene = r.at("scene").as_string();
+    std::error_code ec;
+    fs::copy_file(from / scene, to / scene, fs::copy_options::overwrite_existing, ec);
+    if (ec)
+      throw invalid_argument("cannot copy \"" + (from / scene).string() + "\" (" + ec.message() +
+                             ")");
+  }
+}
+
+// grasp_transfer merge: the shards' results.json and scenes into one output folder.
+int merge(const CommandLine& cli, bool& started, bool& committing) {
+  OutputFolder folder(cli.out, cli.force, "--out");
+  std::vector<Json> docs;
+  for (const std::filesystem::path& dir : cli.shards) {
+    if (!is_grasp_transfer_results(dir / "results.json"))
+      throw invalid_argument("merge: \"" + dir.string() +
+                             "\" holds no results.json of grasp_transfer");
+    docs.push_back(Json::parse(read_file(dir / "results.json", "merge")));
+  }
+  const Json doc = merge_results(docs);  // checks the shards: nothing is written before
+  started = true;
+  for (std::size_t i = 0; i < docs.size(); ++i)
+    copy_scenes(docs[i].at("grasps").as_array(), cli.shards[i], folder.staging());
+  detail::write_text_file(folder.staging() / "results.json", doc.dump(2) + "\n");
+  committing = true;
+  folder.commit();
+  print_table(doc);
+  std::printf("\n%zu shard(s) merged; results in %s\n", docs.size(),
+              (cli.out / "results.json").string().c_str());
+  return 0;
+}
+
+// The MJCF scene of each grasp of a hypothesis, into dir/scenes.
+void write_scenes(const std::filesystem::path& dir, const ExperimentOptions& experiment,
+                  const GraspObject& object, const HumanGrasp& g,
+                  const std::vector<SdhTransfer>& transfers) {
+  if (!g.reached) return;
+  detail::write_text_file(
+      dir / scene_path(object.name, g.id, "human"),
+      grasp_mjcf<models::human_hand>(object, g.hand_pose, g.q, g.object_pose, experiment.transfer));
+  for (const SdhTransfer& t : transfers)
+    if (t.planned)
+      detail::write_text_file(dir / scene_path(object.name, g.id, to_string(t.method)),
+                              grasp_mjcf<models::schunk_sdh>(object, t.hand_pose, t.q_closed,
+                                                             t.object_pose, experiment.transfer));
+}
+
+// The experiment: run (or resume), journal each hypothesis, write and commit the output folder.
+int run(CommandLine& cli, bool& started, bool& committing) {
+#ifdef TOPOGRASP_HAVE_MUJOCO
+  if (cli.experiment.judge != Judge::builtin) {
+    // MuJoCo judges each closed grasp with the same suite: the scene exported articulated
+    // (io/mjcf.hpp) and stepped through MujocoScene.
+    GraspSimOptions& sim = cli.experiment.transfer.sim;
+    sim.second_judge_human = [](const HandScene<models::human_hand>& scene,
+                                const StabilityOptions& o) {
+      return stability_suite(MujocoScene(scene), o);
+    };
+    sim.second_judge_sdh = [](const HandScene<models::schunk_sdh>& scene,
+                              const StabilityOptions& o) {
+      return stability_suite(MujocoScene(scene), o);
+    };
+    sim.second_judge_name = cli.experiment.judge == Judge::mujoco ? "builtin" : "mujoco";
+    sim.second_judge_decides = cli.experiment.judge == Judge::mujoco;
+  }
+#endif
+  if (cli.resume && cli.figures)
+    throw invalid_argument(
+        "--figures: draws the grasps of this run only, so not with --resume (draw them from a "
+        "run without it)");
+  validate_experiment_options(cli.experiment);
+  check_scene_names(cli.experiment);
+  OutputFolder folder(cli.out, cli.force, "--out", cli.resume);  // checked before any work
+  const std::filesystem::path& stage = folder.staging();
+  std::filesystem::create_directories(stage / "scenes");
+  const Json config = results_config(cli.experiment);
+  // --resume: the hypotheses that interrupted runs journalled (with all their scenes), once each.
+  std::vector<JournalEntry> resumed;
+  for (const std::filesystem::path& leftover : folder.leftovers()) {
+    if (!std::filesystem::exists(leftover / journal_file_name)) continue;
+    for (JournalEntry& e : read_journal(leftover / journal_file_name, config)) {
+      const bool seen = std::any_of(resumed.begin(), resumed.end(), [&](const JournalEntry& r) {
+        return r.object == e.object && r.id == e.id;
+      });
+      const bool whole = std::all_of(e.records.begin(), e.records.end(), [&](const Json& r) {
+        return !r.at("scene").is_string() ||
+               std::filesystem::exists(leftover / r.at("scene").as_string());
+      });
+      if (seen || !whole) continue;
+      copy_scenes(e.records, leftover, stage);
+      resumed.push_back(std::move(e));
+    }
+  }
+  folder.remove_leftovers();
+  ResultsJournal journal(stage / journal_file_name, config);
+  folder.keep_staging_on_failure();  // the journal is what --resume takes over
+  std::vector<ObjectRecords> earlier;
+  for (const JournalEntry& e : resumed) {
+    journal.append(e);
+    cli.experiment.skip.emplace_back(e.object, e.id);
+    auto o = std::find_if(earlier.begin(), earlier.end(),
+                          [&](const ObjectRecords& r) { return r.name == e.object; });
+    if (o == earlier.end()) o = earlier.insert(earlier.end(), ObjectRecords{e.object, 0, {}});
+    ++o->hypotheses;
+    o->grasps.insert(o->grasps.end(), e.records.begin(), e.records.end());
+  }
+  started = true;
+  const ProgressFn progress = [quiet = cli.quiet](std::string_view line) {
+    if (!quiet || line.starts_with("warning:")) std::cerr << line << '\n';
+  };
+  if (cli.resume)
+    progress(std::to_string(resumed.size()) + " hypotheses taken over from an interrupted run");
+  // Each finished hypothesis: its scenes, then its line in the journal.
+  const HypothesisDoneFn on_done = [&](const GraspObject& object, const HumanGrasp& g,
+                                       const std::vector<SdhTransfer>& transfers) {
+    write_scenes(stage, cli.experiment, object, g, transfers);
+    std::vector<const SdhTransfer*> ts;
+    for (const SdhTransfer& t : transfers) ts.push_back(&t);
+    journal.append({object.name, g.id, hypothesis_records(cli.experiment, object, g, ts)});
+  };
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<ObjectResult> results = run_experiment(cli.experiment, progress, on_done);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const Json doc = results_json(cli.experiment, results, earlier);
+  detail::write_text_file(stage / "results.json", doc.dump(2) + "\n");
+  if (cli.figures) (void)write_report(stage, results);
+  committing = true;
+  folder.commit();
+  print_table(doc);
+  std::printf("\n%.1f s with %d job(s); results in %s%s\n", seconds, cli.experiment.jobs,
+              (cli.out / "results.json").string().c_str(),
+              cli.figures ? (", figures in " + (cli.out / "index.html").string()).c_str() : "");
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+#ifdef SIGXFSZ
+  // Past a file-size limit a write fails with EFBIG (a readable error, the previous run in DIR
+  // untouched) instead of the signal ending the process.
+  (void)std::signal(SIGXFSZ, SIG_IGN);
+#endif
+  bool started = false;     // exit status 2 before the computation starts, 1 after
+  bool committing = false;  // the output folder's commit has started
+  try {
+    const std::vector<std::string_view> args(argv + 1, argv + argc);
+#ifdef TOPOGRASP_HAVE_MUJOCO
+    constexpr bool mujoco_linked = true;
+#else
+    constexpr bool mujoco_linked = false;
+#endif
+    CommandLine cli = parse_command_line(args, mujoco_linked);
+    if (cli.help) {
+      std::fputs(command_line_usage().c_str(), stdout);
+      return 0;
+    }
+    return cli.merge ? merge(cli, started, committing) : run(cli, started, committing);
+  } catch (const std::exception& e) {
+    std::cerr << "grasp_transfer: " << e.what() << '\n';
+    if (committing)
+      std::cerr << "grasp_transfer: the commit failed part way; the output folder has no "
+                   "results.json, and the new run is in the staging folder named above\n";
+    else if (started)
+      std::cerr << "grasp_transfer: the previous run in the output folder is untouched\n";
+    return started ? 1 : 2;
+  }
+}

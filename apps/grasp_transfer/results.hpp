@@ -1,0 +1,413 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// The results of the grasp-transfer experiment as JSON (results.json, schema in
+/// docs/transfer.md) and each tested grasp as an MJCF scene.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <grasp_transfer/experiment.hpp>
+#include <grasp_transfer/file_name.hpp>
+#include <grasp_transfer/output_folder.hpp>
+#include <grasp_transfer/summaries.hpp>
+#include <topograsp/evaluation/statistics.hpp>
+#include <topograsp/io/json.hpp>
+#include <topograsp/io/keypoint_grasp.hpp>
+#include <topograsp/io/mjcf.hpp>
+
+namespace topograsp {
+
+/// The file name (relative to the output folder) of the MJCF scene of a grasp:
+/// "scenes/<object>_<id>_<method>.xml", method "human" for the demonstration. The object and
+/// method names are cleaned by file_name_part (any byte but letters, digits, '-', '_' and a
+/// non-leading '.' becomes '_', an empty name "_"), so no name ("../../x", "a/b", "", control
+/// characters) can put the scene outside DIR/scenes.
+[[nodiscard]] inline std::string scene_path(std::string_view object, int id,
+                                            std::string_view method) {
+  return "scenes/" + file_name_part(object) + "_" + std::to_string(id) + "_" +
+         file_name_part(method) + ".xml";
+}
+
+/// The MJCF text of a closed grasp: hand model \p M at \p hand_pose with joints \p q, the object
+/// where it was after closing, the motors holding as closing left them (hold_targets() with
+/// options.sim.human_hold_fraction for the human hand, close.hold_fraction for a robot hand).
+template <const auto& M>
+[[nodiscard]] std::string grasp_mjcf(const GraspObject& object, const Eigen::Isometry3d& hand_pose,
+                                     const Vec<M.nq>& q, const Eigen::Isometry3d& object_pose,
+                                     const TransferOptions& options) {
+  ObjectSpec spec = object_spec(object, hand_surface<M>(), options.sim.friction);
+  spec.pose = to_pose(object_pose);
+  HandScene<M> scene(hand_pose, q, spec, options.sim.scene);
+  scene.set_joint_targets(hold_targets(scene, q,
+                                       hand_surface<M>() == HandSurface::human_skin
+                                           ? options.sim.human_hold_fraction
+                                           : options.sim.close.hold_fraction));
+  return to_mjcf(scene);
+}
+
+namespace detail {
+inline Json json_vector(const auto& v) {
+  // Built in place: moving number-holding Json temporaries into a vector trips GCC 12's
+  // -Wmaybe-uninitialized on std::variant.
+  Json::Array a;
+  a.reserve(static_cast<std::size_t>(v.size()));
+  for (Eigen::Index i = 0; i < v.size(); ++i) a.emplace_back(static_cast<double>(v[i]));
+  return Json(std::move(a));
+}
+
+// One test's record as results.json writes it; a test that was not run (steps 0) has null for
+// what it would have measured.
+inline Json json_record(const StabilityRecord& t) {
+  const bool run = t.steps > 0;
+  const auto measured = [run](auto value) { return run ? Json(value) : Json(); };
+  Json r = Json::object();
+  r.set("name", std::string(t.name));
+  r.set("passed", t.passed);
+  r.set("reason", std::string(t.reason));
+  r.set("translation", measured(t.translation));
+  r.set("rotation", measured(t.rotation));
+  r.set("contacts", measured(t.contacts));
+  r.set("force_median", measured(t.force_median));
+  r.set("force_end", measured(t.force_end));
+  r.set("force_ratio", measured(t.force_ratio));
+  r.set("penetration", measured(t.penetration));
+  r.set("steps", t.steps);
+  r.set("status", run ? Json(std::string(to_string(t.status))) : Json());
+  return r;
+}
+
+// The stability fields of a grasp record: the weight, the closing-end overlap and every test's
+// record (none when nothing was simulated).
+inline void set_stability(Json& rec, const StabilityResult* s) {
+  Json tests = Json::array();
+  if (s != nullptr)
+    for (const StabilityRecord& t : s->tests) tests.push_back(json_record(t));
+  rec.set("weight", s != nullptr ? Json(s->weight) : Json());
+  rec.set("closing_penetration", s != nullptr ? Json(s->closing_penetration) : Json());
+  rec.set("collider_error", s != nullptr ? Json(s->collider_error) : Json());
+  rec.set("tests", tests);
+}
+
+// The second judge's verdict and records, and the grasp's Ferrari-Canny epsilon, of a grasp
+// record (null when there is none).
+inline void set_second_and_quality(Json& rec, const std::optional<StabilityResult>& second,
+                                   const QualityRecord* quality, std::string_view name) {
+  if (second) {
+    Json j = Json::object();
+    j.set("engine", std::string(name));
+    j.set("stable", second->stable);
+    j.set("reason", second->reason);
+    set_stability(j, &*second);
+    rec.set("second_judge", j);
+  } else {
+    rec.set("second_judge", Json());
+  }
+  if (quality != nullptr && quality->computed) {
+    Json q = Json::object();
+    q.set("epsilon", quality->epsilon);
+    q.set("status", quality->status);
+    q.set("reason", quality->reason);
+    q.set("torque_scale", quality->torque_scale);
+    rec.set("q1", q);
+  } else {
+    rec.set("q1", Json());
+  }
+}
+
+// The stability options as results.json's config writes them (angles in degrees).
+inline Json json_stability_options(const StabilityOptions& o, double time_step) {
+  const auto motion = [](const ShakeMotion& m) {
+    Json j = Json::object();
+    j.set("steps", m.steps);
+    j.set("rotations", m.rotations);
+    j.set("min_angle_deg", m.min_angle / deg(1.0));
+    j.set("max_angle_deg", m.max_angle / deg(1.0));
+    return j;
+  };
+  Json j = Json::object();
+  j.set("time_step", time_step);
+  j.set("shake", motion(o.shake));
+  j.set("direction_steps", o.direction_steps);
+  j.set("hard_shake", motion(o.hard_shake));
+  j.set("max_translation", o.max_translation);
+  j.set("max_rotation_deg", o.max_rotation / deg(1.0));
+  j.set("touch_distance", o.touch_distance);
+  j.set("max_penetration", o.max_penetration);
+  j.set("pivot", o.pivot == ShakePivot::palm ? "palm" : "object");
+  j.set("every_test", o.every_test);
+  return j;
+}
+}  // namespace detail
+
+/// Checks that the objects of \p options have scene files of their own: distinct names can clean
+/// to the same file name part ("a/b" and "a_b", file_name_part).
+/// \throws topograsp::invalid_argument naming "objects" and both names if two would share files.
+inline void check_scene_names(const ExperimentOptions& options) {
+  for (std::size_t i = 0; i < options.objects.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (file_name_part(options.objects[i].name) == file_name_part(options.objects[j].name))
+        detail::throw_invalid_argument(
+            "objects", "\"" + options.objects[j].name + "\" and \"" + options.objects[i].name +
+                           "\" would share the scene files \"" +
+                           scene_path(options.objects[i].name, 0, "human") + "\", ...");
+}
+
+/// The "config" object of results.json for \p options (docs/transfer.md).
+[[nodiscard]] inline Json results_config(const ExperimentOptions& options) {
+  Json cfg = Json::object();
+  Json objects = Json::array(), methods = Json::array();
+  for (const GraspObject& o : options.objects) objects.push_back(o.name);
+  for (const TransferMethod m : options.methods) methods.push_back(to_string(m));
+  cfg.set("objects", objects);
+  cfg.set("methods", methods);
+  cfg.set("jobs", options.jobs);
+  cfg.set("seed", std::to_string(options.seed));
+  cfg.set("shard",
+          std::to_string(options.shard_index + 1) + "/" + std::to_string(options.shard_count));
+  cfg.set("max_hypotheses", options.max_hypotheses);
+  if (!options.demonstrations.empty()) {  // recorded grasps in place of the planned ones
+    // Each with the FNV-1a hash of its grasp as keypoint_grasp_json() writes it, so that --resume
+    // and merge refuse a recording whose file changed in between, not only a renamed one.
+    Json sources = Json::array();
+    for (const RecordedGrasp& r : options.demonstrations) {
+      char hash[17];
+      std::snprintf(
+          hash, sizeof hash, "%016llx",
+          static_cast<unsigned long long>(fnv1a_64(keypoint_grasp_json(r.grasp, r.source))));
+      Json d = Json::object();
+      d.set("file", r.source);
+      d.set("fnv1a_64", std::string(hash));
+      sources.push_back(std::move(d));
+    }
+    cfg.set("demonstrations", sources);
+  }
+  // 0: each pair from the table of materials (docs/objects.md); else --friction's coefficient.
+  cfg.set("friction", options.transfer.sim.friction);
+  cfg.set("hand_stiffness", options.transfer.sim.scene.stepper.kinematic_stiffness);
+  cfg.set("hold_fraction", options.transfer.sim.close.hold_fraction);
+  cfg.set("human_hold_fraction", options.transfer.sim.human_hold_fraction);
+  cfg.set("judge", std::string(to_string(options.judge)));
+  cfg.set("closing_steps", options.transfer.sim.close.closing_steps);
+  cfg.set("stability",
+          detail::json_stability_options(options.transfer.sim.stability,
+                                         options.transfer.sim.scene.stepper.time_step));
+  cfg.set("aico_steps", options.transfer.aico.steps);
+  Json transfer = Json::object();
+  for (const TransferParameter& p : transfer_parameters)
+    transfer.set(std::string(p.name), p.get(options.transfer));
+  transfer.set("winding_reference", std::string(to_string(options.transfer.winding_reference)));
+  cfg.set("transfer", transfer);
+  return cfg;
+}
+
+/// The grasp records of one hypothesis of \p object: its demonstration \p g (none if the human
+/// hand did not reach the object) and each method's transfer of it, \p transfers in
+/// options.methods order (empty when the demonstration was not stable), in the order
+/// results_document sorts into.
+[[nodiscard]] inline std::vector<Json> hypothesis_records(
+    const ExperimentOptions& options, const GraspObject& object, const HumanGrasp& g,
+    const std::vector<const SdhTransfer*>& transfers) {
+  std::vector<Json> out;
+  if (!g.reached) return out;
+  const std::string& second_name = options.transfer.sim.second_judge_name;
+  const std::string seed = std::to_string(grasp_seed(options.seed, object.name, g.id));
+  Json rec = Json::object();
+  rec.set("object", object.name);
+  rec.set("id", g.id);
+  rec.set("method", "human");
+  // A recorded demonstration: its file (the object's id-th recording of the run).
+  int k = 0;
+  for (const RecordedGrasp& r : options.demonstrations)
+    if (r.grasp.object == object.name && k++ == g.id) rec.set("demonstration", r.source);
+  if (g.fit_error) {  // how far the fitted hand is from the recording's keypoints (m)
+    Json e = Json::object();
+    e.set("rms", g.fit_error->rms);
+    e.set("max", g.fit_error->max);
+    rec.set("fit_error", e);
+  }
+  rec.set("shake_seed", seed);
+  rec.set("stable", g.stable());
+  rec.set("scene", scene_path(object.name, g.id, "human"));
+  rec.set("winding_human", detail::json_vector(g.windings));
+  rec.set("winding_robot", Json::array());
+  rec.set("plan_ms", 0.0);
+  rec.set("sweeps", 0);
+  rec.set("reason", g.stability.reason);
+  detail::set_stability(rec, &g.stability);
+  detail::set_second_and_quality(rec, g.second, &g.quality, second_name);
+  out.push_back(std::move(rec));
+  for (const SdhTransfer* tp : transfers) {
+    const SdhTransfer& t = *tp;
+    Json r = Json::object();
+    r.set("object", object.name);
+    r.set("id", g.id);
+    r.set("method", to_string(t.method));
+    r.set("shake_seed", seed);
+    r.set("stable", t.stable());
+    r.set("scene", t.planned ? Json(scene_path(object.name, g.id, to_string(t.method))) : Json());
+    // The human's y around the point of winding_robot (topological: its winding reference).
+    r.set("winding_human", detail::json_vector(t.source_winding.value_or(g.descriptor.values)));
+    r.set("winding_robot", detail::json_vector(t.winding));
+    r.set("plan_ms", t.plan_ms);
+    r.set("sweeps", t.sweeps);
+    r.set("reason", t.planned ? t.stability.reason : t.reason);
+    // What the planner said of a planned transfer (AICO's termination, the virtual finger's
+    // opposition), null if nothing.
+    r.set("planner", t.planned && !t.reason.empty() ? Json(t.reason) : Json());
+    detail::set_stability(r, t.planned ? &t.stability : nullptr);
+    detail::set_second_and_quality(r, t.planned ? t.second : std::nullopt,
+                                   t.planned ? &t.quality : nullptr, second_name);
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+/// One object's part of a results.json: how many hypotheses were run and their grasp records
+/// (hypothesis_records), in any order.
+/// The name of results.json's "overall" entry: the summaries over every object's grasps.
+inline constexpr std::string_view overall_name = "all objects";
+
+struct ObjectRecords {
+  std::string name;
+  int hypotheses = 0;
+  std::vector<Json> grasps;
+};
+
+/// results.json from its \p config (results_config) and each object's records: the objects in
+/// config order, each object's records sorted (the demonstrations by id, then each method of
+/// config["methods"] in turn by id), and every summary computed from the records, per object and
+/// over all objects ("overall": the same summaries, name overall_name). So shards'
+/// records put together give the document of the whole run (grasp_transfer merge).
+/// \throws topograsp::invalid_argument naming "grasps" if a record's method is not in the config,
+/// a (method, id) appears twice, or the methods did not transfer the same demonstrations; naming
+/// "objects" if an object is not in the config or is given twice.
+[[nodiscard]] inline Json results_document(const Json& config, std::vector<ObjectRecords> objects) {
+  std::vector<std::string> methods;
+  for (const Json& m : config.at("methods").as_array()) methods.push_back(m.as_string());
+  std::vector<std::string> names;
+  for (const Json& o : config.at("objects").as_array()) names.push_back(o.as_string());
+  const auto id_text = [](const Json& rec) {
+    return "hypothesis " + std::to_string(static_cast<long long>(rec.at("id").as_number()));
+  };
+  const auto index_of = [](const std::vector<std::string>& v, const std::string& x) {
+    return static_cast<std::size_t>(std::find(v.begin(), v.end(), x) - v.begin());
+  };
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    if (index_of(names, objects[i].name) == names.size())
+      detail::throw_invalid_argument("objects",
+                                     "\"" + objects[i].name + "\" is not in the config's objects");
+    for (std::size_t j = 0; j < i; ++j)
+      if (objects[i].name == objects[j].name)
+        detail::throw_invalid_argument("objects", "\"" + objects[i].name + "\" is given twice");
+  }
+  std::sort(objects.begin(), objects.end(), [&](const ObjectRecords& a, const ObjectRecords& b) {
+    return index_of(names, a.name) < index_of(names, b.name);
+  });
+  const std::size_t topological = index_of(methods, "topological") + 1;
+  // The summaries of records grouped as `by` (the demonstrations, then each method in config
+  // order, each in id order within an object): stable_human, human, methods.
+  const auto summarise = [&](Json& obj, const std::vector<std::vector<const Json*>>& by) {
+    obj.set("stable_human",
+            static_cast<int>(std::count_if(by[0].begin(), by[0].end(), [](const Json* r) {
+              return detail::record_stable(*r);
+            })));
+    obj.set("human", detail::stability_summary(by[0]));
+    const bool second = std::any_of(by.begin() + 1, by.end(), [](const auto& records) {
+      return std::any_of(records.begin(), records.end(),
+                         [](const Json* r) { return !r->at("second_judge").is_null(); });
+    });
+    Json ms = Json::object();
+    for (std::size_t m = 0; m < methods.size(); ++m) {
+      Json summary = detail::stability_summary(by[m + 1]);
+      // Against the topological method on the same grasps (same shakes): McNemar's exact test.
+      const bool paired = topological <= methods.size() && m + 1 != topological;
+      summary.set("paired",
+                  paired ? detail::paired_summary(by[m + 1], by[topological], false) : Json());
+      summary.set("paired_second", paired && second
+                                       ? detail::paired_summary(by[m + 1], by[topological], true)
+                                       : Json());
+      ms.set(methods[m], summary);
+    }
+    obj.set("methods", ms);
+  };
+  Json out_objects = Json::array(), grasps = Json::array();
+  std::vector<std::vector<const Json*>> all(methods.size() + 1);  // every object's, in order
+  int all_hypotheses = 0;
+  for (ObjectRecords& o : objects) {
+    // The sort key: (method: the demonstration first, then config order; id).
+    const auto key = [&](const Json& rec) {
+      const std::string& m = rec.at("method").as_string();
+      const std::size_t mi = m == "human" ? 0 : index_of(methods, m) + 1;
+      if (mi == methods.size() + 1)
+        detail::throw_invalid_argument("grasps", "method \"" + m + "\" of " + o.name + " " +
+                                                     id_text(rec) +
+                                                     " is not in the config's methods");
+      return std::pair{mi, rec.at("id").as_number()};
+    };
+    std::sort(o.grasps.begin(), o.grasps.end(),
+              [&](const Json& a, const Json& b) { return key(a) < key(b); });
+    for (std::size_t i = 1; i < o.grasps.size(); ++i)
+      if (key(o.grasps[i - 1]) == key(o.grasps[i]))
+        detail::throw_invalid_argument("grasps", o.name + " " + id_text(o.grasps[i]) + " by " +
+                                                     o.grasps[i].at("method").as_string() +
+                                                     " is given twice");
+    std::vector<std::vector<const Json*>> by(methods.size() + 1);
+    for (const Json& rec : o.grasps) by[key(rec).first].push_back(&rec);
+    for (std::size_t m = 0; m < by.size(); ++m)
+      all[m].insert(all[m].end(), by[m].begin(), by[m].end());
+    all_hypotheses += o.hypotheses;
+    Json obj = Json::object();
+    obj.set("name", o.name);
+    obj.set("hypotheses", o.hypotheses);
+    summarise(obj, by);
+    out_objects.push_back(obj);
+  }
+  // Every object's records together (the pairing holds object by object, in the same order).
+  Json overall = Json::object();
+  overall.set("name", std::string(overall_name));
+  overall.set("hypotheses", all_hypotheses);
+  summarise(overall, all);
+  for (ObjectRecords& o : objects)
+    for (Json& rec : o.grasps) grasps.push_back(std::move(rec));
+  Json doc = Json::object();
+  doc.set("generator", std::string(results_generator));
+  doc.set("config", config);
+  doc.set("objects", out_objects);
+  doc.set("overall", overall);
+  doc.set("grasps", grasps);
+  return doc;
+}
+
+/// results.json: {"generator": "topograsp grasp_transfer", "config": {...}, "objects": [...],
+/// "grasps": [...]}; see docs/transfer.md. \p earlier: records of hypotheses an earlier run did
+/// (options.skip; grasp_transfer --resume), by object name, with the number of them.
+[[nodiscard]] inline Json results_json(const ExperimentOptions& options,
+                                       const std::vector<ObjectResult>& results,
+                                       const std::vector<ObjectRecords>& earlier = {}) {
+  std::vector<ObjectRecords> objects;
+  for (const ObjectResult& r : results) {
+    ObjectRecords o{r.object.name, r.hypotheses, {}};
+    for (const HumanGrasp& g : r.human) {
+      const auto k = std::find(r.transferred_ids.begin(), r.transferred_ids.end(), g.id);
+      std::vector<const SdhTransfer*> transfers;
+      if (k != r.transferred_ids.end())
+        for (const std::vector<SdhTransfer>& ts : r.transfers)
+          transfers.push_back(&ts[static_cast<std::size_t>(k - r.transferred_ids.begin())]);
+      for (Json& rec : hypothesis_records(options, r.object, g, transfers))
+        o.grasps.push_back(std::move(rec));
+    }
+    for (const ObjectRecords& e : earlier)
+      if (e.name == o.name) {
+        o.hypotheses += e.hypotheses;
+        o.grasps.insert(o.grasps.end(), e.grasps.begin(), e.grasps.end());
+      }
+    objects.push_back(std::move(o));
+  }
+  return results_document(results_config(options), std::move(objects));
+}
+
+}  // namespace topograsp

@@ -1,0 +1,136 @@
+# SPDX-License-Identifier: BSD-3-Clause
+# How each program runs as a test (short arguments so the suite stays fast).
+add_test(NAME "app: grasp_transfer (small run)"
+         COMMAND grasp_transfer --max-hypotheses 4 --jobs 2 --quiet --figures
+                 --out ${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_small)
+# The shipped recorded grasps (data/demonstrations) as the demonstrations (the first of each
+# object), two methods; and the YCB objects (a smoke run: two of them, two hypotheses each).
+add_test(NAME "app: grasp_transfer --demonstrations"
+         COMMAND grasp_transfer --demonstrations ${PROJECT_SOURCE_DIR}/data/demonstrations
+                 --max-hypotheses 1 --methods topological,transplant --judge builtin --jobs 2
+                 --quiet --out ${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_demonstrations)
+add_test(NAME "app: grasp_transfer on YCB objects (small run)"
+         COMMAND grasp_transfer --objects ycb_tomato_soup_can,ycb_banana --max-hypotheses 2
+                 --methods topological,transplant --judge builtin --jobs 2 --quiet
+                 --out ${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_ycb)
+add_test(NAME "app: record_demonstrations"
+         COMMAND record_demonstrations --object can --count 1 --noise 1
+                 --out ${CMAKE_CURRENT_BINARY_DIR}/recorded)
+# Bad input: a clear message on stderr naming the option, and exit status 2 (nothing computed).
+# Each case is "name|arguments separated by spaces|regex that stderr must match"; the tests get
+# the label LABEL ("" for none).
+function(expect_rejected program label)
+  foreach(case IN LISTS ARGN)
+    string(REPLACE "|" ";" parts "${case}")
+    list(GET parts 0 name)
+    list(GET parts 1 args)
+    list(GET parts 2 expect)
+    string(REPLACE " " ";" args "${args}")
+    add_test(NAME "app: ${program} rejects ${name}"
+             COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:${program}>;${args}"
+                     "-DEXPECT=${expect}" -DSTATUS=2
+                     -P ${PROJECT_SOURCE_DIR}/cmake/expect_failure.cmake)
+    if(label)
+      set_tests_properties("app: ${program} rejects ${name}" PROPERTIES LABELS ${label})
+    endif()
+  endforeach()
+endfunction()
+set(bad ${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_bad)
+expect_rejected(grasp_transfer "" "unknown object|--objects anvil|--objects: unknown object \"anvil\""
+                      "unknown method|--methods teleport|--methods: unknown method \"teleport\""
+                      "duplicate object|--objects hammer,hammer|--objects: \"hammer\" is given twice"
+                      "duplicate method|--methods topological,topological|--methods: \"topological\" is given twice"
+                      "empty name|--objects hammer,,bottle|--objects: empty name"
+                      "an option as a value|--out --jobs 2|--out: expected a value, got the option \"--jobs\""
+                      "a missing value|--jobs|--jobs: expected a value"
+                      "a repeated option|--out a --out b|--out: given twice"
+                      "unknown option|--outt x|unknown option \"--outt\""
+                      "bad shard|--shard 4/3|--shard: expected 1 <= K <= N"
+                      "bad jobs|--jobs zero|--jobs: expected a number"
+                      "too many jobs|--jobs 100000|--jobs: expected 1 to 1024"
+                      "unwritable out|--out /proc/grasp_transfer|--out: cannot"
+                      "unknown parameter|--set reach=1|unknown transfer parameter \"reach\""
+                      "negative parameter|--set final_approach=-1|final_approach: must be in"
+                      "parameter out of range|--set backoff=1e300|--set: backoff: must be in \\[0, 0.3\\]"
+                      "parameter set twice|--set backoff=0.1 --set backoff=0.2|--set: backoff is set twice"
+                      "parameter without value|--set final_approach|--set: expected NAME=VALUE"
+                      "unknown winding reference|--winding-reference palm|--winding-reference: unknown reference"
+                      "resume with figures|--resume --figures|--figures: draws the grasps of this run only"
+                      "merge without shards|merge --out x|merge: expected the shards' output folders"
+                      "merge with a run option|merge --jobs 2 x|--jobs: not an option of merge"
+                      "merge of a folder without a run|merge --out ${bad}-m /proc|merge: \"/proc\" holds no results.json of grasp_transfer"
+                      "missing demonstrations|--demonstrations ${bad}-none.json|--demonstrations: [^:]*-none.json: file: no such file"
+                      "demonstrations and objects|--demonstrations ${PROJECT_SOURCE_DIR}/data/demonstrations --objects hammer|--objects: not with --demonstrations"
+                      "a folder without recordings|--demonstrations ${PROJECT_SOURCE_DIR}/docs/figures|--demonstrations: .* holds no keypoint files"
+                      "a malformed recording|--demonstrations ${PROJECT_SOURCE_DIR}/tests/io/data/bad_keypoints.json|--demonstrations: [^:]*bad_keypoints.json: keypoints\\[3\\]: expected three numbers")
+# Output folders that are refused before any work (exit 2), each prepared by the test.
+add_test(NAME "app: grasp_transfer rejects results.json that is a folder"
+         COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:grasp_transfer>;--quiet;--out;${bad}-a"
+                 "-DEXPECT=--out: \"[^\"]*results.json\" exists and is not a regular file"
+                 -DSTATUS=2 -DMKDIR=${bad}-a/results.json
+                 -P ${PROJECT_SOURCE_DIR}/cmake/expect_failure.cmake)
+add_test(NAME "app: grasp_transfer rejects a folder of other files without --force"
+         COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:grasp_transfer>;--quiet;--out;${bad}-b"
+                 "-DEXPECT=--out: .* holds no results.json of grasp_transfer; use --force"
+                 -DSTATUS=2 -DMKFILE=${bad}-b/notes.txt
+                 -P ${PROJECT_SOURCE_DIR}/cmake/expect_failure.cmake)
+add_test(NAME "app: grasp_transfer rejects an output folder inside a file"
+         COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:grasp_transfer>;--quiet;--out;${bad}-c/file/out"
+                 "-DEXPECT=--out: cannot create the folder" -DSTATUS=2 -DMKFILE=${bad}-c/file
+                 -P ${PROJECT_SOURCE_DIR}/cmake/expect_failure.cmake)
+# --help prints the usage with every parameter's range, and exits 0.
+add_test(NAME "app: grasp_transfer --help" COMMAND grasp_transfer --help)
+set_tests_properties("app: grasp_transfer --help" PROPERTIES
+                     PASS_REGULAR_EXPRESSION "backoff +0.03 +\\[0, 0.3\\]")
+# Two shards of a small run merged into one output folder (merge_results checks the document
+# against the whole run in tests/grasp/test_resume_merge.cpp); a shard missing is refused.
+add_test(NAME "app: grasp_transfer shards merged"
+         COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:grasp_transfer>
+                 -DDIR=${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_shards
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/grasp_transfer/shard_merge.cmake)
+# The Slurm job scripts (apps/grasp_transfer/slurm), run without Slurm as the scheduler would run them.
+add_test(NAME "app: slurm job scripts"
+         COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:grasp_transfer>
+                 -DDIR=${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_slurm
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/grasp_transfer/slurm/run_locally.cmake)
+# The transfer matrix (docs/results.md): a small run, one stable bottle demonstration to every
+# hand by the fingertip and virtual-finger baselines; bad arguments refused.
+add_test(NAME "app: transfer_matrix (small run)"
+         COMMAND transfer_matrix --objects bottle --max-hypotheses 6
+                 --methods fingertip,virtual_finger --quiet
+                 --out ${CMAKE_CURRENT_BINARY_DIR}/transfer_matrix_small)
+set_tests_properties("app: transfer_matrix (small run)" PROPERTIES
+                     PASS_REGULAR_EXPRESSION "human -> Shadow \\| bottle \\| virtual_finger \\| 1 \\|")
+# The sanitizer build does not build transfer_matrix (apps/CMakeLists.txt): its refusals are
+# checked in the Release build with its end-to-end run.
+expect_rejected(transfer_matrix end_to_end "unknown object|--objects anvil|--objects: unknown object \"anvil\""
+                "a method that needs the arm|--methods closed_windings|--methods: unknown method \"closed_windings\""
+                "a repeated option|--jobs 2 --jobs 2|--jobs: given twice"
+                "a missing value|--out|--out: expected a value"
+                "bad jobs|--jobs 0|--jobs: expected 1 to 1024"
+                "negative hypotheses|--max-hypotheses -1|--max-hypotheses: expected >= 0"
+                "unknown option|--hand allegro|unknown option \"--hand\""
+                "unwritable out|--out /proc/transfer_matrix|--out: cannot create the folder")
+add_test(NAME "app: transfer_matrix rejects a folder of other files without --force"
+         COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:transfer_matrix>;--quiet;--out;${bad}-matrix"
+                 "-DEXPECT=--out: .* holds no matrix.json of transfer_matrix; use --force"
+                 -DSTATUS=2 -DMKFILE=${bad}-matrix/notes.txt
+                 -P ${PROJECT_SOURCE_DIR}/cmake/expect_failure.cmake)
+set_tests_properties("app: transfer_matrix rejects a folder of other files without --force"
+                     PROPERTIES LABELS end_to_end)
+
+# The programs' runs that simulate grasps are the end-to-end tests (label end_to_end): they run
+# once, in the Release build of the README's test command. The sanitize preset leaves them out
+# (tests/CMakeLists.txt) and runs this shortened end-to-end run instead (label smoke): one
+# hypothesis of each built-in object through the whole program, every method, both judges (MuJoCo
+# where it is found), figures and the results page.
+set_tests_properties("app: grasp_transfer (small run)"
+                     "app: grasp_transfer --demonstrations"
+                     "app: grasp_transfer on YCB objects (small run)"
+                     "app: record_demonstrations"
+                     "app: grasp_transfer shards merged" "app: slurm job scripts"
+                     "app: transfer_matrix (small run)" PROPERTIES LABELS end_to_end)
+add_test(NAME "app: grasp_transfer (smoke)"
+         COMMAND grasp_transfer --max-hypotheses 1 --jobs 2 --quiet --figures
+                 --out ${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_smoke)
+set_tests_properties("app: grasp_transfer (smoke)" PROPERTIES LABELS smoke)
