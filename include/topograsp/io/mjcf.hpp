@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
-/// MJCF export of a physics scene, so a grasp can be re-checked in MuJoCo (2.2 or later): a World
-/// with its hand frozen, or a hand scene articulated (joints, motors, couplings, the grasp as a
-/// keyframe).
+/// MJCF export of a hand scene, so a grasp can be re-checked in MuJoCo (2.2 or later): the hand
+/// articulated (joints, motors, couplings, the grasp as a keyframe). A World with its hand frozen:
+/// io/mjcf_world.hpp, included here.
 #pragma once
 
 #include <algorithm>
@@ -18,6 +18,8 @@
 
 #include <topograsp/core/error.hpp>
 #include <topograsp/evaluation/hand_scene.hpp>
+#include <topograsp/io/detail/mjcf_write.hpp>
+#include <topograsp/io/mjcf_world.hpp>
 #include <topograsp/physics/world.hpp>
 
 namespace topograsp {
@@ -40,9 +42,8 @@ struct MjcfOptions {
   /// and act only on overlap: each pair gets margin = gap = this value, so MuJoCo's constraint
   /// starts at distance 0 exactly as without it. Default 0: MuJoCo 2.2 measures pairs with a
   /// cylinder by its general convex collider (MPR), which runs on the shapes grown by the
-  /// margin, and with any margin it can take the wrong way out: a capsule overlapping a cylinder
-  /// by 1.5 mm was reported 23 mm deep with a 5 mm margin, and 3.2 mm as 19.7 mm with 1 mm
-  /// (exact without). MujocoScene::collider_error() measures this per grasp.
+  /// margin and with any margin can report wrong depths (docs/evaluation.md);
+  /// MujocoScene::collider_error() measures this per grasp.
   double report_distance = 0.0;
   /// The time constant (s) of every hand-object contact (the pair's solref, damping ratio 1).
   /// MuJoCo's contact is a spring whose stiffness scales with the effective mass m as about
@@ -61,42 +62,6 @@ struct MjcfOptions {
 };
 
 namespace detail {
-
-inline void write_mjcf_vec3(std::ostream& os, const char* attribute, const Vec3& v) {
-  os << ' ' << attribute << "=\"" << v.x() << ' ' << v.y() << ' ' << v.z() << '"';
-}
-
-inline void write_mjcf_shape(std::ostream& os, const ShapeSpec& s) {
-  os << " type=\"" << to_string(s.type) << "\" size=\"";
-  switch (s.type) {
-    case ShapeType::sphere:
-      os << s.size[0];
-      break;
-    case ShapeType::capsule:
-    case ShapeType::cylinder:
-      os << s.size[0] << ' ' << s.size[1];
-      break;
-    case ShapeType::box:
-      os << s.size[0] << ' ' << s.size[1] << ' ' << s.size[2];
-      break;
-  }
-  os << '"';
-}
-
-// The radius of a sphere about the shape's centre that holds it.
-inline double mjcf_shape_radius(const ShapeSpec& s) {
-  switch (s.type) {
-    case ShapeType::sphere:
-      return s.size[0];
-    case ShapeType::capsule:
-      return s.size[0] + s.size[1];
-    case ShapeType::cylinder:
-      return std::hypot(s.size[0], s.size[1]);
-    case ShapeType::box:
-      return std::hypot(s.size[0], s.size[1], s.size[2]);
-  }
-  return 0.0;
-}
 
 /// What the articulated export reads of a hand scene's motors: the joints' actual values, their
 /// targets, each configuration entry's effort limit (N m or N) and the fraction of it the motors
@@ -160,100 +125,6 @@ inline void require_mjcf_options(const MjcfOptions& o, int nq) {
   return std::max(1, static_cast<int>(n));
 }
 
-namespace detail {
-
-inline void write_mjcf_pose(std::ostream& os, const Eigen::Isometry3d& T) {
-  const Eigen::Quaterniond q(T.linear());
-  os << " pos=\"" << T.translation().x() << ' ' << T.translation().y() << ' ' << T.translation().z()
-     << "\" quat=\"" << q.w() << ' ' << q.x() << ' ' << q.y() << ' ' << q.z() << '"';
-}
-
-// One geom: the shape at `T` (in the enclosing body's frame).
-inline void write_mjcf_geom(std::ostream& os, std::string_view indent, const std::string& name,
-                            const ShapeSpec& s, const Eigen::Isometry3d& T, double mu,
-                            double torsion) {
-  os << indent << "<geom name=\"" << name << '"';
-  write_mjcf_shape(os, s);
-  write_mjcf_pose(os, T);
-  os << " friction=\"" << mu << ' ' << mu * torsion << " 0.0001\" condim=\""
-     << (torsion > 0.0 ? 4 : 3) << "\"/>\n";
-}
-
-}  // namespace detail
-
-/// Writes \p world as an MJCF model that MuJoCo 2.2 loads: fixed bodies as geoms of the world
-/// body; every kinematic body's shapes as geoms of one body named "hand" with mocap="true",
-/// placed at \p hand_frame (the hand at its current configuration); each dynamic body as a body
-/// with a free joint, named "object" (then "object_1", ...), with its geoms, mass, centre of mass
-/// and full inertia. Options: the time step, gravity, an elliptic (circular) friction cone and
-/// the Euler integrator. Each geom carries its body's friction coefficient mu and, with
-/// torsional friction (condim 4), mu * torsional_friction_radius: MuJoCo takes the larger value
-/// of a pair where topograsp takes sqrt(mu_a mu_b), the same when both bodies have the same mu.
-/// MuJoCo's contacts use its own softness (solref, solimp defaults), not kinematic_stiffness.
-template <class S>
-void write_mjcf(std::ostream& os, const World<S>& world, const Eigen::Isometry3d& hand_frame,
-                std::string_view model_name = "topograsp_scene") {
-  const auto flags = os.flags();
-  const auto precision = os.precision();
-  os << std::setprecision(12);  // 1e-12 relative: far below any tolerance of a simulation
-  const StepperOptions& o = world.options();
-  const auto g = world.gravity().template cast<double>();
-  const double torsion = o.torsional_friction_radius;
-  os << "<mujoco model=\"" << model_name << "\">\n";
-  os << "  <compiler angle=\"radian\"/>\n";
-  os << "  <option timestep=\"" << o.time_step << "\" gravity=\"" << g.x() << ' ' << g.y() << ' '
-     << g.z() << "\" cone=\"elliptic\" integrator=\"Euler\"/>\n";
-  os << "  <worldbody>\n";
-  const auto shape_pose = [&](const Collider<S>& c) {
-    return world.body(c.body).pose() * c.spec.pose.isometry();
-  };
-  for (int b = 0; b < world.body_count(); ++b) {
-    const RigidBody<S>& body = world.body(b);
-    if (body.type != BodyType::fixed) continue;
-    for (int c = body.first_collider; c < body.first_collider + body.n_colliders; ++c)
-      detail::write_mjcf_geom(os, "    ", "fixed_" + std::to_string(c), world.collider(c).spec,
-                              shape_pose(world.collider(c)), static_cast<double>(body.friction),
-                              0.0);
-  }
-  os << "    <body name=\"hand\" mocap=\"true\"";
-  detail::write_mjcf_pose(os, hand_frame);
-  os << ">\n";
-  const Eigen::Isometry3d hand_inv = hand_frame.inverse();
-  for (int b = 0; b < world.body_count(); ++b) {
-    const RigidBody<S>& body = world.body(b);
-    if (body.type != BodyType::kinematic) continue;
-    for (int c = body.first_collider; c < body.first_collider + body.n_colliders; ++c)
-      detail::write_mjcf_geom(os, "      ", "hand_" + std::to_string(c), world.collider(c).spec,
-                              hand_inv * shape_pose(world.collider(c)),
-                              static_cast<double>(body.friction), torsion);
-  }
-  os << "    </body>\n";
-  int n_objects = 0;
-  for (int b = 0; b < world.body_count(); ++b) {
-    const RigidBody<S>& body = world.body(b);
-    if (body.type != BodyType::dynamic) continue;
-    const std::string name = n_objects == 0 ? "object" : "object_" + std::to_string(n_objects);
-    ++n_objects;
-    os << "    <body name=\"" << name << '"';
-    detail::write_mjcf_pose(os, body.pose());
-    os << ">\n";
-    os << "      <joint name=\"" << name << "_free\" type=\"free\"/>\n";
-    const Mat3 I = body.inertia.template cast<double>();
-    const Vec3 c = body.local_com.template cast<double>();
-    os << "      <inertial pos=\"" << c.x() << ' ' << c.y() << ' ' << c.z() << "\" mass=\""
-       << static_cast<double>(body.mass) << "\" fullinertia=\"" << I(0, 0) << ' ' << I(1, 1) << ' '
-       << I(2, 2) << ' ' << I(0, 1) << ' ' << I(0, 2) << ' ' << I(1, 2) << "\"/>\n";
-    for (int k = body.first_collider; k < body.first_collider + body.n_colliders; ++k)
-      detail::write_mjcf_geom(os, "      ", name + "_" + std::to_string(k - body.first_collider),
-                              world.collider(k).spec, world.collider(k).spec.pose.isometry(),
-                              static_cast<double>(body.friction), torsion);
-    os << "    </body>\n";
-  }
-  os << "  </worldbody>\n</mujoco>\n";
-  os.flags(flags);
-  os.precision(precision);
-}
-
 /// Writes \p scene as an articulated MJCF model that MuJoCo 2.2 loads and that opens holding the
 /// object (the scene contract of docs/evaluation.md):
 /// - `<option>`: the scene's time step split into mjcf_substeps(time_step, max_time_step) equal
@@ -290,12 +161,11 @@ void write_mjcf(std::ostream& os, const World<S>& world, const Eigen::Isometry3d
 /// - a site named `palm` at the model's palm centre (a hand model only);
 /// - `<keyframe><key name="grasp">` with qpos (the base's pose, the joints' values and the
 ///   object's pose), ctrl (the targets, clamped to the limits), mpos and mquat (the hand pose).
-/// Geoms are named `hand_<collider>` (the World's collider index) and `object_<k>`. Throws
-/// topograsp::invalid_argument naming the option for a bad option (non-positive max_time_step,
-/// or impratio; negative default_armature or
-/// report_distance; a contact_timeconst or hand_timeconst under 2 * max_time_step; options.effort
-/// of the wrong size
-/// or with an entry that is not positive).
+/// Geoms are named `hand_<collider>` (the World's collider index) and `object_<k>`.
+/// \throws topograsp::invalid_argument naming the option for a bad option (non-positive
+/// max_time_step or impratio; negative default_armature or report_distance; a contact_timeconst
+/// or hand_timeconst under 2 * max_time_step; options.effort of the wrong size or with an entry
+/// that is not positive).
 template <const auto& M, class S>
 void write_mjcf(std::ostream& os, const HandScene<M, S>& scene, const MjcfOptions& options) {
   using ModelType = std::remove_cvref_t<decltype(M)>;
