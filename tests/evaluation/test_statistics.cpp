@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The Wilson interval against Newcombe's published examples, McNemar's exact test against exact
-// binomial sums, and what both do with bad input.
+// binomial sums, and what both do with bad input; the median.
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -79,4 +80,14 @@ TEST_CASE("a paired comparison counts the four kinds of pair", "[evaluation][sta
   CHECK(c.p_value == Approx(mcnemar_exact_p(7, 1)));
   CHECK(c.p_value == Approx(2.0 * 9.0 / 256.0));
   CHECK_THROWS_WITH(compare_paired(a, {true}), Catch::Contains("as many outcomes"));
+}
+
+TEST_CASE("the median is the middle value, or the mean of the two middle ones",
+          "[evaluation][statistics]") {
+  std::vector<double> odd{5.0, 1.0, 3.0};
+  CHECK(median(odd) == 3.0);
+  std::vector<double> even{4.0, 1.0, 3.0, 2.0};
+  CHECK(median(even) == 2.5);
+  std::vector<double> none;
+  CHECK(std::isnan(median(none)));
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <initializer_list>
 #include <stdexcept>
 #include <string>
@@ -14,10 +15,29 @@
 namespace topograsp {
 
 /// Thrown for a non-finite or wrongly sized run-time input at a public entry point. The message
-/// starts with the name of the offending argument.
+/// starts with the name of the offending argument: "<argument>: <problem>".
 class invalid_argument : public std::invalid_argument {
  public:
   using std::invalid_argument::invalid_argument;
+  /// The error "<argument>: <problem>" about \p argument.
+  invalid_argument(std::string_view argument, std::string_view problem)
+      : std::invalid_argument(message(argument, problem)), problem_offset_(argument.size() + 2) {}
+  /// The name of the offending argument ("" for an error made from a whole message).
+  [[nodiscard]] std::string_view argument() const noexcept {
+    return problem_offset_ == 0 ? std::string_view()
+                                : std::string_view(what(), problem_offset_ - 2);
+  }
+  /// What is wrong with argument() (the whole message for an error made from one).
+  [[nodiscard]] std::string_view problem() const noexcept { return what() + problem_offset_; }
+
+ private:
+  static std::string message(std::string_view argument, std::string_view problem) {
+    std::string m(argument);
+    m += ": ";
+    m += problem;
+    return m;
+  }
+  std::size_t problem_offset_ = 0;  // where the problem starts in what(); 0 without an argument
 };
 
 namespace detail {
@@ -38,10 +58,7 @@ inline std::string file_line_message(const std::string& file, int line,
 }
 
 [[noreturn]] inline void throw_invalid_argument(std::string_view argument, std::string_view what) {
-  std::string message(argument);
-  message += ": ";
-  message += what;
-  throw invalid_argument(message);
+  throw invalid_argument(argument, what);
 }
 
 }  // namespace detail

@@ -8,37 +8,21 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
-#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <topograsp/evaluation/grasp_wrench.hpp>
+#include <topograsp/evaluation/object_spec.hpp>
 #include <topograsp/geometry/mass_properties.hpp>
 #include <topograsp/kinematics/data.hpp>
 #include <topograsp/kinematics/forward.hpp>
+#include <topograsp/kinematics/jacobian.hpp>
+#include <topograsp/physics/body_contacts.hpp>
 #include <topograsp/physics/world.hpp>
 
 namespace topograsp {
-
-/// An object to grasp: shapes in the object frame, its pose, and its mass or density.
-struct ObjectSpec {
-  std::vector<ShapeSpec> shapes;  ///< in the object frame; ShapeSpec::link is ignored
-  Pose pose{};                    ///< the object frame in the world
-  double mass = 0.0;              ///< kg; if 0 the mass comes from density
-  double density = 0.0;           ///< kg/m^3, used when mass is 0
-  /// Density of each shape (kg/m^3), one per shape, for an object of several materials; empty =
-  /// uniform (density, or mass spread evenly). With a mass they share it out; without, they give
-  /// it.
-  std::vector<double> part_density{};
-  /// Coulomb friction coefficient of each shape against every hand link, one per shape; empty =
-  /// HandSceneOptions::friction for every pair.
-  std::vector<double> part_friction{};
-  /// The object's mass, centre of mass and inertia when its shapes only approximate it (a mesh
-  /// object: GraspObject::inertial); then mass, density and part_density are not used.
-  std::optional<MassProperties<double>> inertial{};
-};
 
 /// The parameters of a HandScene beyond the stepper's.
 struct HandSceneOptions {
@@ -116,31 +100,7 @@ class HandScene {
     require_positive(options.servo_distance, "options.servo_distance");
     require_non_negative(options.servo_damping_time, "options.servo_damping_time");
     require_motors();
-    if (object.shapes.empty())
-      detail::throw_invalid_argument("object.shapes", "expected at least one shape");
-    const std::size_t n_parts = object.shapes.size();
-    const auto require_per_part = [n_parts](const std::vector<double>& v, const char* field) {
-      if (!v.empty() && v.size() != n_parts)
-        detail::throw_invalid_argument(std::string("object.") + field,
-                                       "expected one value per shape (" + std::to_string(n_parts) +
-                                           "), got " + std::to_string(v.size()));
-    };
-    require_per_part(object.part_density, "part_density");
-    require_per_part(object.part_friction, "part_friction");
-    for (std::size_t i = 0; i < object.part_density.size(); ++i)
-      require_positive(object.part_density[i], "object.part_density[" + std::to_string(i) + "]");
-    for (std::size_t i = 0; i < object.part_friction.size(); ++i) {
-      const std::string name = "object.part_friction[" + std::to_string(i) + "]";
-      require_non_negative(object.part_friction[i], name);
-      if (object.part_friction[i] > 1e6)
-        detail::throw_invalid_argument(
-            name, "expected at most 1e6, got " + std::to_string(object.part_friction[i]));
-    }
-    if (!object.inertial && !(object.mass > 0.0)) {
-      if (object.mass != 0.0) require_positive(object.mass, "object.mass");
-      if (object.part_density.empty())
-        require_positive(object.density, "object.density (the mass is 0)");
-    }
+    detail::require_object_spec(object);
     hand_pose_ = placed_ = hand_pose;
     q_ = target_ = clamp_to_limits<M>(q);
     forward_kinematics(kin_, q_);
@@ -182,25 +142,7 @@ class HandScene {
       d.friction = options.friction;
       link_body_[l] = world_.add_body(d);
     }
-    BodyDesc o;
-    o.type = BodyType::dynamic;
-    o.pose = object.pose;
-    o.shapes = object.shapes;
-    o.mass = object.mass;
-    o.density = object.density;
-    o.shape_density = object.part_density;
-    o.inertial = object.inertial;
-    o.friction = options.friction;
-    try {
-      object_ = world_.add_body(o);
-    } catch (const invalid_argument& e) {
-      // Name this constructor's argument ("object.mass"), not the World's ("desc.mass").
-      const std::string_view m = e.what();
-      const std::size_t colon = m.find(": ");
-      if (m.rfind("desc.", 0) != 0 || colon == std::string_view::npos) throw;
-      detail::throw_invalid_argument("object." + std::string(m.substr(5, colon - 5)),
-                                     m.substr(colon + 2));
-    }
+    object_ = detail::add_object_body(world_, object, options.friction);
     // Friction per pair of materials: each part against every shape of every hand link.
     if (!object.part_friction.empty()) {
       const RigidBody<S>& ob = world_.body(object_);
@@ -335,32 +277,29 @@ class HandScene {
   /// The number of hand-object contact points with a separation of at most \p max_separation (m).
   [[nodiscard]] int hand_contacts(double max_separation = 0.0) const noexcept {
     int n = 0;
-    for (const Manifold<S>& m : world_.manifolds())
-      if (m.body_b == object_ || m.body_a == object_)
-        for (int k = 0; k < m.count; ++k)
-          if (static_cast<double>(m.points[static_cast<std::size_t>(k)].separation) <=
-              max_separation)
-            ++n;
+    for_each_contact(world_.manifolds(), object_,
+                     [&](const Manifold<S>&, const ContactPoint<S>& p) {
+                       if (static_cast<double>(p.separation) <= max_separation) ++n;
+                     });
     return n;
   }
   /// The total normal force (N) of the hand on the object over the last step.
   [[nodiscard]] double hand_force() const noexcept {
     double sum = 0.0;
-    for (const Manifold<S>& m : world_.manifolds())
-      if (m.body_b == object_ || m.body_a == object_)
-        for (int k = 0; k < m.count; ++k)
-          sum += static_cast<double>(m.points[static_cast<std::size_t>(k)].step_impulse);
+    for_each_contact(world_.manifolds(), object_,
+                     [&](const Manifold<S>&, const ContactPoint<S>& p) {
+                       sum += static_cast<double>(p.step_impulse);
+                     });
     return sum / world_.options().time_step;
   }
 
   /// The deepest hand-object overlap at the last step (m, >= 0; 0 when nothing overlaps).
   [[nodiscard]] double deepest_penetration() const noexcept {
     double deepest = 0.0;
-    for (const Manifold<S>& m : world_.manifolds())
-      if (m.body_b == object_ || m.body_a == object_)
-        for (int k = 0; k < m.count; ++k)
-          deepest = std::max(
-              deepest, -static_cast<double>(m.points[static_cast<std::size_t>(k)].separation));
+    for_each_contact(world_.manifolds(), object_,
+                     [&](const Manifold<S>&, const ContactPoint<S>& p) {
+                       deepest = std::max(deepest, -static_cast<double>(p.separation));
+                     });
     return deepest;
   }
   /// Gravity in the world frame (m/s^2).
@@ -394,16 +333,20 @@ class HandScene {
   [[nodiscard]] Eigen::Isometry3d object_in_hand() const noexcept {
     return hand_pose_.inverse() * object_pose();
   }
+  /// The hand frame pose the next step drives the hand to.
   [[nodiscard]] const Eigen::Isometry3d& hand_pose() const noexcept { return hand_pose_; }
   /// The motors' targets (dim nq).
   [[nodiscard]] const Config& joint_targets() const noexcept { return target_; }
+  /// The World that holds the hand and the object.
   [[nodiscard]] const World<S>& world() const noexcept { return world_; }
   [[nodiscard]] World<S>& world() noexcept { return world_; }
+  /// The object's body in world().
   [[nodiscard]] int object_body() const noexcept { return object_; }
   /// The World body of link \p l, or -1 if the link has no shapes.
   [[nodiscard]] int link_body(int l) const noexcept {
     return link_body_[static_cast<std::size_t>(l)];
   }
+  /// The options the scene was built with.
   [[nodiscard]] const HandSceneOptions& options() const noexcept { return options_; }
   /// Forward kinematics at the joints' positions (hand frame).
   [[nodiscard]] const KinematicsData<M>& kinematics() const noexcept { return kin_; }
@@ -432,18 +375,15 @@ class HandScene {
   [[nodiscard]] std::vector<ContactForQuality> hand_contact_points(
       double max_separation = 0.0) const {
     std::vector<ContactForQuality> out;
-    for (const Manifold<S>& m : world_.manifolds()) {
-      if (m.body_a != object_ && m.body_b != object_) continue;
-      // A manifold's normal points from body A into body B.
-      const double into_object = m.body_b == object_ ? 1.0 : -1.0;
-      for (int k = 0; k < m.count; ++k) {
-        const ContactPoint<S>& p = m.points[static_cast<std::size_t>(k)];
-        if (!(static_cast<double>(p.separation) <= max_separation)) continue;
-        out.push_back({p.point.template cast<double>(),
-                       into_object * p.normal.template cast<double>(),
-                       static_cast<double>(m.friction)});
-      }
-    }
+    for_each_contact(world_.manifolds(), object_,
+                     [&](const Manifold<S>& m, const ContactPoint<S>& p) {
+                       if (!(static_cast<double>(p.separation) <= max_separation)) return;
+                       // A manifold's normal points from body A into body B.
+                       const double into_object = m.body_b == object_ ? 1.0 : -1.0;
+                       out.push_back({p.point.template cast<double>(),
+                                      into_object * p.normal.template cast<double>(),
+                                      static_cast<double>(m.friction)});
+                     });
     return out;
   }
 
@@ -471,16 +411,8 @@ class HandScene {
       if (!(m > 0.0)) continue;
       const Vec3 c = kin_.p[l] + kin_.R[l] * link_com_[l];
       const Mat3 I = kin_.R[l] * link_inertia_[l] * kin_.R[l].transpose();
-      Mat<3, nq> Jv = Mat<3, nq>::Zero(), Jw = Mat<3, nq>::Zero();
-      for (const SupportJoint& j : M.support(static_cast<int>(l))) {
-        const auto u = static_cast<std::size_t>(j.link);
-        if (j.type == JointType::revolute) {
-          Jv.col(j.q) += j.multiplier * kin_.axis[u].cross(c - kin_.p[u]);
-          Jw.col(j.q) += j.multiplier * kin_.axis[u];
-        } else {
-          Jv.col(j.q) += j.multiplier * kin_.axis[u];
-        }
-      }
+      const Mat<3, nq> Jv = point_jacobian(kin_, static_cast<int>(l), c);
+      const Mat<3, nq> Jw = link_rotation_jacobian(kin_, static_cast<int>(l));
       for (int i = 0; i < nq; ++i) {
         inertia_[i] += m * Jv.col(i).squaredNorm() + Jw.col(i).dot(I * Jw.col(i));
         gravity_force_[i] += m * g.dot(Jv.col(i));

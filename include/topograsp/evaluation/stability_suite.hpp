@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,6 +21,7 @@
 #include <topograsp/core/random.hpp>
 #include <topograsp/core/status.hpp>
 #include <topograsp/evaluation/grasp_scene.hpp>
+#include <topograsp/evaluation/statistics.hpp>
 #include <topograsp/physics/detail/math.hpp>
 
 namespace topograsp {
@@ -200,17 +202,6 @@ inline void require_shake_motion(const ShakeMotion& m, int min_steps, std::strin
     throw_invalid_argument(n + ".max_angle", "expected >= " + n + ".min_angle");
 }
 
-// The median of v[0, n) (reorders it); 0 for n = 0.
-inline double median_of(std::vector<double>& v, std::size_t n) noexcept {
-  if (n == 0) return 0.0;
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(n / 2);
-  std::nth_element(v.begin(), mid, v.begin() + static_cast<std::ptrdiff_t>(n));
-  const double hi = *mid;
-  if (n % 2 == 1) return hi;
-  const double lo = *std::max_element(v.begin(), mid);
-  return 0.5 * (lo + hi);
-}
-
 // Runs one test on `scene` (a copy of the closing-end state): `steps` steps, the hand at
 // `motion(k)` before step k (or still if the motion is null), then the verdict.
 template <GraspScene Scene, class Motion>
@@ -228,7 +219,8 @@ void run_test(Scene& scene, int steps, const Motion& motion, const Eigen::Isomet
   object_motion(reference, scene.object_in_hand(), r.translation, r.rotation);
   r.contacts = scene.hand_contacts(o.touch_distance);
   r.force_end = scene.hand_force();
-  r.force_median = median_of(forces, static_cast<std::size_t>(r.steps));
+  r.force_median =
+      r.steps > 0 ? median(std::span(forces).first(static_cast<std::size_t>(r.steps))) : 0.0;
   r.force_ratio = r.force_median / weight;
   r.penetration = deepest;
   const bool finite = std::isfinite(r.translation) && std::isfinite(r.rotation) &&

@@ -2,12 +2,14 @@
 /// \file
 /// The statistics of a success rate and of a paired comparison, as Table I reports them: the
 /// Wilson score interval of a rate, and McNemar's exact test of two methods judged on the same
-/// grasps. See docs/evaluation.md.
+/// grasps; and the median of a sample. See docs/evaluation.md.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,19 @@ namespace topograsp {
 
 /// The normal quantile of a two-sided 95 % interval (z with P(|Z| <= z) = 0.95).
 inline constexpr double z_95 = 1.959963984540054;
+
+/// The median of \p values: the middle value, or the mean of the two middle ones for an even
+/// count; NaN for none. Reorders \p values; allocates nothing.
+[[nodiscard]] inline double median(std::span<double> values) noexcept {
+  const std::size_t n = values.size();
+  if (n == 0) return std::numeric_limits<double>::quiet_NaN();
+  const auto mid = values.begin() + static_cast<std::ptrdiff_t>(n / 2);
+  std::nth_element(values.begin(), mid, values.end());
+  const double hi = *mid;
+  if (n % 2 == 1) return hi;
+  const double lo = *std::max_element(values.begin(), mid);
+  return 0.5 * (lo + hi);
+}
 
 /// A closed interval [lower, upper] of a rate, both in [0, 1].
 struct RateInterval {

@@ -4,10 +4,7 @@
 /// soft-step solver with warm starting, circular friction cones and torsional friction.
 #pragma once
 
-#include <array>
 #include <cmath>
-#include <cstdio>
-#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -19,31 +16,19 @@
 #include <topograsp/geometry/mass_properties.hpp>
 #include <topograsp/geometry/primitive.hpp>
 #include <topograsp/physics/actuator.hpp>
+#include <topograsp/physics/body_contacts.hpp>
+#include <topograsp/physics/collider.hpp>
 #include <topograsp/physics/contact.hpp>
 #include <topograsp/physics/contact_solver.hpp>
+#include <topograsp/physics/detail/contact_slots.hpp>
 #include <topograsp/physics/detail/step.hpp>
+#include <topograsp/physics/detail/step_undo.hpp>
 #include <topograsp/physics/detail/world_checks.hpp>
-#include <topograsp/physics/narrow_phase.hpp>
 #include <topograsp/physics/polytope.hpp>
 #include <topograsp/physics/rigid_body.hpp>
 #include <topograsp/physics/stepper_options.hpp>
 
 namespace topograsp {
-
-/// A shape attached to a body of a World.
-template <class S = double>
-struct Collider {
-  int body = -1;
-  ShapeType type = ShapeType::sphere;
-  Vec<3, S> size = Vec<3, S>::Zero();               ///< as ShapeSpec::size
-  Mat<3, 3, S> local_R = Mat<3, 3, S>::Identity();  ///< in body axes
-  Vec<3, S> local_p = Vec<3, S>::Zero();            ///< from the centre of mass
-  S bounding_radius = S(0);  ///< of a sphere about the shape's centre that contains it (m)
-  int polytope = -1;         ///< index into World's polytopes (boxes and cylinders)
-  Mat<3, 3, S> R = Mat<3, 3, S>::Identity();  ///< world rotation (current)
-  Vec<3, S> p = Vec<3, S>::Zero();            ///< world position (current)
-  ShapeSpec spec{};                           ///< the shape as given, in the body frame
-};
 
 /// The rigid-body stepper over the scalar type \p S (double; float compiles and runs).
 ///
@@ -134,7 +119,7 @@ class World {
       b.inv_mass = S(1) / mp.mass;
       b.local_com = mp.com;
       b.inertia = mp.inertia;
-      b.inv_inertia_local = inverse_in_range(mp.inertia);
+      b.inv_inertia_local = detail::inverse_in_range<S>(mp.inertia);
       b.update_world_inertia();
       detail::require_representable_mass(b, options_,
                                          desc.inertial                ? "desc.inertial"
@@ -146,44 +131,15 @@ class World {
     b.first_collider = static_cast<int>(colliders_.size());
     b.n_colliders = static_cast<int>(desc.shapes.size());
     const int index = static_cast<int>(bodies_.size());
-    for (const ShapeSpec& s : desc.shapes) {
-      Collider<S> c;
-      c.body = index;
-      c.spec = s;
-      c.type = s.type;
-      c.size = V3(static_cast<S>(s.size[0]), static_cast<S>(s.size[1]), static_cast<S>(s.size[2]));
-      c.local_R = detail::rotation_of<S>(s.pose);
-      c.local_p = detail::translation_of<S>(s.pose) - b.local_com;
-      c.bounding_radius = detail::bounding_radius<S>(s.type, c.size);
-      if (s.type == ShapeType::box || s.type == ShapeType::cylinder) {
-        c.polytope = static_cast<int>(polytopes_.size());
-        polytopes_.push_back(s.type == ShapeType::box ? box_polytope<S>(c.size)
-                                                      : cylinder_polytope<S>(c.size[0], c.size[1]));
-      }
-      colliders_.push_back(c);
-    }
+    for (const ShapeSpec& s : desc.shapes)
+      colliders_.push_back(detail::make_collider<S>(s, index, b.local_com, polytopes_));
     bodies_.push_back(b);
     targets_.push_back(detail::KinematicTarget<S>{b.R, b.x, false});
     joints_.push_back({});
     saved_.push_back({});
     turned_.push_back(M3::Identity());
     update_colliders(index);
-    // Contact slots with every earlier body that this one can touch.
-    for (int j = 0; j < index; ++j) {
-      const RigidBody<S>& o = bodies_[static_cast<std::size_t>(j)];
-      if (o.type != BodyType::dynamic && b.type != BodyType::dynamic) continue;
-      for (int ca = o.first_collider; ca < o.first_collider + o.n_colliders; ++ca)
-        for (int cb = b.first_collider; cb < b.first_collider + b.n_colliders; ++cb) {
-          Manifold<S> m;
-          m.body_a = j;
-          m.body_b = index;
-          m.collider_a = ca;
-          m.collider_b = cb;
-          m.friction = std::sqrt(o.friction * b.friction);
-          m.kinematic = o.type == BodyType::kinematic || b.type == BodyType::kinematic;
-          manifolds_.push_back(m);
-        }
-    }
+    detail::add_contact_slots<S>(manifolds_, bodies_, index);
     return index;
   }
 
@@ -284,6 +240,7 @@ class World {
     saved_actuators_.push_back({});
     return static_cast<int>(actuators_.size()) - 1;
   }
+  /// The number of actuators.
   [[nodiscard]] int actuator_count() const noexcept { return static_cast<int>(actuators_.size()); }
   /// The state of actuator \p a (position q, velocity qd, target, limits, ...).
   [[nodiscard]] const detail::Actuator<S>& actuator(int a) const noexcept {
@@ -384,6 +341,7 @@ class World {
     detail::require_step_catches_fall(g, options_, "g");
     gravity_ = g.template cast<S>();
   }
+  /// Gravity (m/s^2, world frame).
   [[nodiscard]] V3 gravity() const noexcept { return gravity_; }
 
   /// Advances the world by one time step (see the class comment). Allocates nothing. Returns
@@ -394,10 +352,11 @@ class World {
     if (status_ != Status::success) return status_;
     const detail::StepContext<S> ctx =
         detail::make_step_context<S>(bodies_, joints_, actuators_, turned_, options_, gravity_);
-    save_state();
+    detail::save_state<S>(bodies_, actuators_, saved_, saved_actuators_);
     detail::begin_actuator_step(ctx);
     detail::drive_kinematic<S>(ctx, targets_);
-    find_contacts();
+    detail::find_contacts<S>(manifolds_, colliders_, polytopes_,
+                             static_cast<S>(options_.speculative_distance));
     detail::prepare_contacts<S>(manifolds_, ctx);
     for (int sub = 0; sub < ctx.substeps; ++sub) {
       detail::kinematic_substep<S>(ctx, targets_, sub);
@@ -421,8 +380,9 @@ class World {
     detail::finish_kinematic<S>(ctx, targets_);
     for (int i = 0; i < static_cast<int>(bodies_.size()); ++i) update_colliders(i);
     detail::store_impulses<S>(manifolds_);
-    if (!state_ok()) {
-      restore_state();
+    if (!detail::state_ok<S>(bodies_, actuators_, static_cast<S>(options_.max_speed),
+                             max_length())) {
+      detail::restore_state<S>(bodies_, actuators_, saved_, saved_actuators_, colliders_);
       status_ = Status::numerical_issue;
       return status_;
     }
@@ -436,6 +396,7 @@ class World {
     TOPOGRASP_ASSERT(i >= 0 && i < body_count(), "body index out of range");
     return bodies_[static_cast<std::size_t>(i)];
   }
+  /// The number of bodies.
   [[nodiscard]] int body_count() const noexcept { return static_cast<int>(bodies_.size()); }
   /// Every contact slot; those with count > 0 touched (or nearly) in the last step.
   [[nodiscard]] std::span<const Manifold<S>> manifolds() const noexcept { return manifolds_; }
@@ -444,29 +405,31 @@ class World {
     TOPOGRASP_ASSERT(i >= 0 && i < collider_count(), "collider index out of range");
     return colliders_[static_cast<std::size_t>(i)];
   }
+  /// The number of shapes.
   [[nodiscard]] int collider_count() const noexcept { return static_cast<int>(colliders_.size()); }
 
   /// The number of contact points between bodies \p a and \p b (either order) at the last step
   /// whose separation was at most \p max_separation (m).
   [[nodiscard]] int contact_count(int a, int b, S max_separation = S(0)) const noexcept {
     int n = 0;
-    for (const Manifold<S>& m : manifolds_)
-      if ((m.body_a == a && m.body_b == b) || (m.body_a == b && m.body_b == a))
-        for (int k = 0; k < m.count; ++k)
-          if (m.points[static_cast<std::size_t>(k)].separation <= max_separation) ++n;
+    for_each_contact(manifolds(), a, [&](const Manifold<S>& m, const ContactPoint<S>& p) {
+      if (other_body(m, a) == b && p.separation <= max_separation) ++n;
+    });
     return n;
   }
 
   /// The total normal impulse (N s) between bodies \p a and \p b over the last step.
   [[nodiscard]] S normal_impulse(int a, int b) const noexcept {
     S sum = S(0);
-    for (const Manifold<S>& m : manifolds_)
-      if ((m.body_a == a && m.body_b == b) || (m.body_a == b && m.body_b == a))
-        for (int k = 0; k < m.count; ++k) sum += m.points[static_cast<std::size_t>(k)].step_impulse;
+    for_each_contact(manifolds(), a, [&](const Manifold<S>& m, const ContactPoint<S>& p) {
+      if (other_body(m, a) == b) sum += p.step_impulse;
+    });
     return sum;
   }
 
+  /// The options the world was built with.
   [[nodiscard]] const StepperOptions& options() const noexcept { return options_; }
+  /// Status::success, or the status of the step that ended the run.
   [[nodiscard]] Status status() const noexcept { return status_; }
   /// Simulated time (s) and steps taken since construction.
   [[nodiscard]] double time() const noexcept { return time_; }
@@ -481,131 +444,21 @@ class World {
   /// The shape \p i as the narrow phase sees it, at its current pose.
   [[nodiscard]] ShapeView<S> shape_view(int i) const noexcept {
     TOPOGRASP_ASSERT(i >= 0 && i < collider_count(), "collider index out of range");
-    return view(colliders_[static_cast<std::size_t>(i)]);
+    return detail::shape_view<S>(colliders_[static_cast<std::size_t>(i)], polytopes_);
   }
 
  private:
-  struct Saved {
-    V3 x = V3::Zero(), v = V3::Zero(), w = V3::Zero();
-    detail::Quat<S> q = detail::Quat<S>::Identity();
-    M3 R = M3::Identity();
-  };
-
   void require_kinematic(int body) const {
     detail::require_index(body, bodies_.size(), "body", "body");
     if (bodies_[static_cast<std::size_t>(body)].type != BodyType::kinematic)
       detail::throw_invalid_argument("body", "expected a kinematic body");
-  }
-  // The inverse of a symmetric positive definite 3x3 matrix. Eigen's closed-form inverse forms
-  // products of three entries, which overflow or underflow for entries beyond about 1e100 (or
-  // 1e12 in float): outside [2^-k, 2^k], k a sixth of the exponent range of S, the matrix is
-  // first scaled by an exact power of two, inv(A) = 2^-e inv(A 2^-e). Inside, the plain inverse.
-  static M3 inverse_in_range(const M3& A) {
-    const S m = A.cwiseAbs().maxCoeff();
-    constexpr int k = std::numeric_limits<S>::max_exponent / 6;
-    if (!(m > S(0)) || !std::isfinite(m) || (m >= std::ldexp(S(1), -k) && m <= std::ldexp(S(1), k)))
-      return A.inverse();
-    int e = 0;
-    (void)std::frexp(m, &e);
-    return M3(M3(A * std::ldexp(S(1), -e)).inverse() * std::ldexp(S(1), -e));
   }
   static M3 orthonormalized(const M3& R) noexcept {
     return detail::Quat<S>(R).normalized().toRotationMatrix();
   }
 
   void update_colliders(int i) noexcept {
-    const RigidBody<S>& b = bodies_[static_cast<std::size_t>(i)];
-    for (int c = b.first_collider; c < b.first_collider + b.n_colliders; ++c) {
-      Collider<S>& col = colliders_[static_cast<std::size_t>(c)];
-      col.R.noalias() = b.R * col.local_R;
-      col.p = b.x + b.R * col.local_p;
-    }
-  }
-
-  void save_state() noexcept {
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
-      const RigidBody<S>& b = bodies_[i];
-      saved_[i] = {b.x, b.v, b.w, b.q, b.R};
-    }
-    for (std::size_t i = 0; i < actuators_.size(); ++i) saved_actuators_[i] = actuators_[i];
-  }
-  void restore_state() noexcept {
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
-      RigidBody<S>& b = bodies_[i];
-      b.x = saved_[i].x;
-      b.v = saved_[i].v;
-      b.w = saved_[i].w;
-      b.q = saved_[i].q;
-      b.R = b.q.toRotationMatrix();
-      b.update_world_inertia();
-      update_colliders(static_cast<int>(i));
-    }
-    for (std::size_t i = 0; i < actuators_.size(); ++i) actuators_[i] = saved_actuators_[i];
-  }
-  [[nodiscard]] bool state_ok() const noexcept {
-    const S vmax = static_cast<S>(options_.max_speed);
-    const S xmax = max_length();
-    for (const RigidBody<S>& b : bodies_) {
-      if (b.type != BodyType::dynamic) continue;
-      if (!b.x.allFinite() || !b.v.allFinite() || !b.w.allFinite() || !b.q.coeffs().allFinite())
-        return false;
-      if (b.v.norm() > vmax || b.w.norm() > vmax) return false;
-      if (b.x.cwiseAbs().maxCoeff() > xmax) return false;
-    }
-    for (const detail::Actuator<S>& a : actuators_)
-      if (!std::isfinite(a.q) || !std::isfinite(a.qd) || std::abs(a.qd) > vmax) return false;
-    return true;
-  }
-
-  [[nodiscard]] ShapeView<S> view(const Collider<S>& c) const noexcept {
-    ShapeView<S> v;
-    v.type = c.type;
-    v.size = c.size;
-    v.R = c.R;
-    v.p = c.p;
-    TOPOGRASP_ASSERT(
-        (c.polytope >= 0) == (c.type == ShapeType::box || c.type == ShapeType::cylinder),
-        "boxes and cylinders, and only they, have a polytope");
-    v.polytope = c.polytope >= 0 ? &polytopes_[static_cast<std::size_t>(c.polytope)] : nullptr;
-    return v;
-  }
-
-  // A contact point lies midway between the two surfaces. When the smaller shape lies deep inside
-  // the larger one (a sphere of radius 1e127 around a ball of 0.4 m: an overlap of 1e127 m) that
-  // point lies far outside both bodies, and its lever arms turn the solver's impulses into
-  // overflow. Points farther than twice the smaller shape's bounding radius (plus the margin)
-  // from its centre are moved back to that distance along the same line; no overlap shallower
-  // than the smaller shape's own size is touched.
-  static void keep_points_near(const Collider<S>& ca, const Collider<S>& cb, S margin,
-                               ContactSet<S>& cs) noexcept {
-    const Collider<S>& small = ca.bounding_radius <= cb.bounding_radius ? ca : cb;
-    const S reach = S(2) * small.bounding_radius + margin;
-    for (int k = 0; k < cs.count; ++k) {
-      V3& p = cs.points[static_cast<std::size_t>(k)].point;
-      const V3 d = p - small.p;
-      const S r = d.norm();
-      if (r > reach) p = small.p + d * (reach / r);
-    }
-  }
-
-  // The narrow phase on every pair whose bounding spheres are within the margin, with each new
-  // point matched to the previous step's by feature id (match_contacts()).
-  void find_contacts() noexcept {
-    const S margin = static_cast<S>(options_.speculative_distance);
-    for (Manifold<S>& m : manifolds_) {
-      const Collider<S>& ca = colliders_[static_cast<std::size_t>(m.collider_a)];
-      const Collider<S>& cb = colliders_[static_cast<std::size_t>(m.collider_b)];
-      const S reach = ca.bounding_radius + cb.bounding_radius + margin;
-      if ((ca.p - cb.p).squaredNorm() > reach * reach) {
-        m.count = 0;
-        m.twist_impulse = S(0);
-        continue;
-      }
-      ContactSet<S> cs;
-      collide<S>(view(ca), view(cb), margin, cs);
-      keep_points_near(ca, cb, margin, cs);
-      match_contacts<S>(m, cs);
-    }
+    detail::place_colliders<S>(bodies_[static_cast<std::size_t>(i)], colliders_);
   }
 
   // How far each body has turned since the step began (the contact solver's frame rotation).
@@ -621,7 +474,7 @@ class World {
   V3 gravity_ = V3::Zero();
   std::vector<RigidBody<S>> bodies_;
   std::vector<detail::KinematicTarget<S>> targets_;
-  std::vector<Saved> saved_;
+  std::vector<detail::SavedBody<S>> saved_;
   std::vector<M3> turned_;  // rotation of each body since the step began (solver scratch)
   std::vector<Collider<S>> colliders_;
   std::vector<Polytope<S>> polytopes_;
