@@ -63,21 +63,22 @@ expect_rejected(grasp_transfer "" "unknown object|--objects anvil|--objects: unk
                       "demonstrations and objects|--demonstrations ${PROJECT_SOURCE_DIR}/data/demonstrations --objects hammer|--objects: not with --demonstrations"
                       "a folder without recordings|--demonstrations ${PROJECT_SOURCE_DIR}/docs/figures|--demonstrations: .* holds no keypoint files"
                       "a malformed recording|--demonstrations ${PROJECT_SOURCE_DIR}/tests/io/data/bad_keypoints.json|--demonstrations: [^:]*bad_keypoints.json: keypoints\\[3\\]: expected three numbers")
-# Output folders that are refused before any work (exit 2), each prepared by the test.
-add_test(NAME "app: grasp_transfer rejects results.json that is a folder"
-         COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:grasp_transfer>;--quiet;--out;${bad}-a"
-                 "-DEXPECT=--out: \"[^\"]*results.json\" exists and is not a regular file"
-                 -DSTATUS=2 -DMKDIR=${bad}-a/results.json
-                 -P ${PROJECT_SOURCE_DIR}/cmake/expect_failure.cmake)
-add_test(NAME "app: grasp_transfer rejects a folder of other files without --force"
-         COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:grasp_transfer>;--quiet;--out;${bad}-b"
-                 "-DEXPECT=--out: .* holds no results.json of grasp_transfer; use --force"
-                 -DSTATUS=2 -DMKFILE=${bad}-b/notes.txt
-                 -P ${PROJECT_SOURCE_DIR}/cmake/expect_failure.cmake)
-add_test(NAME "app: grasp_transfer rejects an output folder inside a file"
-         COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:grasp_transfer>;--quiet;--out;${bad}-c/file/out"
-                 "-DEXPECT=--out: cannot create the folder" -DSTATUS=2 -DMKFILE=${bad}-c/file
-                 -P ${PROJECT_SOURCE_DIR}/cmake/expect_failure.cmake)
+# Output folders that are refused before any work (exit 2), each prepared by the test: PREPARE is
+# MKDIR=path or MKFILE=path (cmake/expect_failure.cmake), OUT the --out folder.
+function(expect_refused_folder program name out prepare expect)
+  add_test(NAME "app: ${program} rejects ${name}"
+           COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:${program}>;--quiet;--out;${out}"
+                   "-DEXPECT=${expect}" -DSTATUS=2 -D${prepare}
+                   -P ${PROJECT_SOURCE_DIR}/cmake/expect_failure.cmake)
+endfunction()
+expect_refused_folder(grasp_transfer "results.json that is a folder" ${bad}-a
+                      MKDIR=${bad}-a/results.json
+                      "--out: \"[^\"]*results.json\" exists and is not a regular file")
+expect_refused_folder(grasp_transfer "a folder of other files without --force" ${bad}-b
+                      MKFILE=${bad}-b/notes.txt
+                      "--out: .* holds no results.json of grasp_transfer; use --force")
+expect_refused_folder(grasp_transfer "an output folder inside a file" ${bad}-c/file/out
+                      MKFILE=${bad}-c/file "--out: cannot create the folder")
 # --help prints the usage with every parameter's range, and exits 0.
 add_test(NAME "app: grasp_transfer --help" COMMAND grasp_transfer --help)
 set_tests_properties("app: grasp_transfer --help" PROPERTIES
@@ -111,11 +112,9 @@ expect_rejected(transfer_matrix end_to_end "unknown object|--objects anvil|--obj
                 "negative hypotheses|--max-hypotheses -1|--max-hypotheses: expected >= 0"
                 "unknown option|--hand allegro|unknown option \"--hand\""
                 "unwritable out|--out /proc/transfer_matrix|--out: cannot create the folder")
-add_test(NAME "app: transfer_matrix rejects a folder of other files without --force"
-         COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:transfer_matrix>;--quiet;--out;${bad}-matrix"
-                 "-DEXPECT=--out: .* holds no matrix.json of transfer_matrix; use --force"
-                 -DSTATUS=2 -DMKFILE=${bad}-matrix/notes.txt
-                 -P ${PROJECT_SOURCE_DIR}/cmake/expect_failure.cmake)
+expect_refused_folder(transfer_matrix "a folder of other files without --force" ${bad}-matrix
+                      MKFILE=${bad}-matrix/notes.txt
+                      "--out: .* holds no matrix.json of transfer_matrix; use --force")
 set_tests_properties("app: transfer_matrix rejects a folder of other files without --force"
                      PROPERTIES LABELS end_to_end)
 

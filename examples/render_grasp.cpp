@@ -21,6 +21,7 @@
 #include <topograsp/grasp/placement.hpp>
 #include <topograsp/model/models.hpp>
 #include <topograsp/render/html_page.hpp>
+#include <topograsp/render/svg_panels.hpp>
 #include <topograsp/render/svg_plot.hpp>
 #include <topograsp/render/svg_scene.hpp>
 #include <topograsp/task/winding_task.hpp>

@@ -13,6 +13,7 @@
 #include <grasp_transfer/experiment.hpp>
 #include <grasp_transfer/file_name.hpp>
 #include <topograsp/render/html_page.hpp>
+#include <topograsp/render/svg_panels.hpp>
 #include <topograsp/render/svg_plot.hpp>
 #include <topograsp/render/svg_scene.hpp>
 

@@ -72,12 +72,7 @@ inline Json agreement_summary(const std::vector<const Json*>& records, int teste
 }
 
 // The median of v (0 values: null).
-inline Json json_median(std::vector<double> v) {
-  if (v.empty()) return Json();
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return Json(n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
-}
+inline Json json_median(std::vector<double> v) { return v.empty() ? Json() : Json(median(v)); }
 
 // The summary of a set of grasp records (one without tests - not simulated - counts in `tested`
 // and fails): how many, how many stable, the rate and its Wilson interval, each test's pass rate

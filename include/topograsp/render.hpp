@@ -4,5 +4,7 @@
 #pragma once
 
 #include <topograsp/render/html_page.hpp>
+#include <topograsp/render/svg_camera.hpp>
+#include <topograsp/render/svg_panels.hpp>
 #include <topograsp/render/svg_plot.hpp>
 #include <topograsp/render/svg_scene.hpp>

@@ -12,6 +12,7 @@
 #include <topograsp/evaluation/close_hand.hpp>
 #include <topograsp/evaluation/stability_suite.hpp>
 #include <topograsp/grasp/transfer/options.hpp>
+#include <topograsp/physics/stepper_options.hpp>
 
 using namespace topograsp;
 
@@ -115,6 +116,7 @@ TEST_CASE("the library's parameter tables hold their defaults and both ends of t
   check_table(aico_parameters);
   check_table(close_parameters);
   check_table(stability_parameters);
+  check_table(stepper_parameters);
 }
 
 TEST_CASE("the documentation's example of a parameter table", "[core][parameters]") {

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 #include <topograsp/render/html_page.hpp>
+#include <topograsp/render/svg_panels.hpp>
 #include <topograsp/render/svg_plot.hpp>
 #include <topograsp/render/svg_scene.hpp>
 #include <vector>

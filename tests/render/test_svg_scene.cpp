@@ -6,6 +6,7 @@
 #include <regex>
 #include <string>
 #include <topograsp/model/models.hpp>
+#include <topograsp/render/svg_panels.hpp>
 #include <topograsp/render/svg_plot.hpp>
 #include <topograsp/render/svg_scene.hpp>
 #include <vector>

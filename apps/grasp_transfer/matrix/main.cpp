@@ -19,7 +19,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <limits>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -127,14 +126,6 @@ struct Cell {
   std::vector<double> winding_errors;   // topological: max |w closed - target|
 };
 using Key = std::tuple<std::string, std::string, std::string>;  // pair, object, method
-
-// The median of v (NaN if empty).
-double median(std::vector<double> v) {
-  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 // The most frequent failure of a cell and its count ("-" if none).
 std::string top_failure(const Cell& c) {
@@ -248,7 +239,8 @@ int run(const Options& o, OutputFolder& folder) {
   for (const Key& key : order) {
     const Cell& c = cells[key];
     const auto& [pair, object, method] = key;
-    const double we = median(c.winding_errors);
+    std::vector<double> errors = c.winding_errors;
+    const double we = median(errors);
     char werr[32] = "-";
     if (!std::isnan(we)) std::snprintf(werr, sizeof werr, "%.2f", we);
     md += "| " + pair + " | " + object + " | " + method + " | " + std::to_string(c.tested) + " | " +

@@ -45,12 +45,9 @@ struct MjcfOptions {
   /// margin and with any margin can report wrong depths (docs/evaluation.md);
   /// MujocoScene::collider_error() measures this per grasp.
   double report_distance = 0.0;
-  /// The time constant (s) of every hand-object contact (the pair's solref, damping ratio 1).
-  /// MuJoCo's contact is a spring whose stiffness scales with the effective mass m as about
-  /// m / timeconst^2: 0.01 s gives a 0.6 kg object about 6000 N/m, near the built-in finger pads'
-  /// 8000 N/m (StepperOptions::kinematic_stiffness), where MuJoCo's default 0.02 s gives 1500 N/m
-  /// and lets a held object turn in the grip several times as far. At least 2 time steps, as MuJoCo
-  /// asks (0.01 s is 5 of the 1.85 ms steps). Default 0.01.
+  /// The time constant (s) of every hand-object contact (the pair's solref, damping ratio 1): the
+  /// contact's stiffness is about the effective mass / timeconst^2. At least 2 time steps, as
+  /// MuJoCo asks. Default 0.01, near the built-in finger pads' stiffness (docs/evaluation.md).
   double contact_timeconst = 0.01;
   /// The time constant (s) of the weld that makes the hand's base follow the mocap body `hand`
   /// (solref, damping ratio 1): the shorter, the stiffer. At least 2 * max_time_step, as MuJoCo

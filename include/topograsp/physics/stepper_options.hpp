@@ -6,6 +6,7 @@
 #include <array>
 
 #include <topograsp/core/constants.hpp>
+#include <topograsp/core/parameters.hpp>
 
 namespace topograsp {
 
@@ -76,6 +77,36 @@ struct StepperOptions {
   /// Angular damping (1/s) of dynamic bodies, like linear_damping. Default 0.
   double angular_damping = 0.0;
 };
+
+/// The numeric fields of StepperOptions with their valid ranges (World's constructor checks
+/// them, and that time_step and max_speed suit the scalar type; gravity is checked apart).
+inline constexpr ParameterTable<StepperOptions, 14> stepper_parameters{{
+    {"time_step", &StepperOptions::time_step, 0.0, unbounded, "s: the fixed time step", true},
+    {"substeps", &StepperOptions::substeps, 1, 1000, "sub-steps per step"},
+    {"iterations", &StepperOptions::iterations, 1, 100, "Gauss-Seidel passes per solve"},
+    {"contact_hertz", &StepperOptions::contact_hertz, 0.0, unbounded,
+     "Hz: stiffness of rigid soft contacts", true},
+    {"contact_damping_ratio", &StepperOptions::contact_damping_ratio, 0.0, unbounded,
+     "damping ratio of rigid soft contacts"},
+    {"contact_push_max_speed", &StepperOptions::contact_push_max_speed, 0.0, unbounded,
+     "m/s: largest push-out speed of rigid contacts", true},
+    {"kinematic_stiffness", &StepperOptions::kinematic_stiffness, 0.0, unbounded,
+     "N/m: stiffness of kinematic-dynamic contacts"},
+    {"kinematic_damping_ratio", &StepperOptions::kinematic_damping_ratio, 0.0, unbounded,
+     "damping ratio of kinematic-dynamic contacts"},
+    {"kinematic_push_max_speed", &StepperOptions::kinematic_push_max_speed, 0.0, unbounded,
+     "m/s: largest push-out speed of kinematic contacts", true},
+    {"torsional_friction_radius", &StepperOptions::torsional_friction_radius, 0.0, unbounded,
+     "m: radius of the kinematic contacts' torsional friction"},
+    {"speculative_distance", &StepperOptions::speculative_distance, 0.0, unbounded,
+     "m: contacts are made within this gap"},
+    {"max_speed", &StepperOptions::max_speed, 0.0, unbounded,
+     "m/s or rad/s: a faster dynamic body ends the run", true},
+    {"linear_damping", &StepperOptions::linear_damping, 0.0, unbounded,
+     "1/s: linear damping of dynamic bodies"},
+    {"angular_damping", &StepperOptions::angular_damping, 0.0, unbounded,
+     "1/s: angular damping of dynamic bodies"},
+}};
 
 /// The default options (the field initialisers of StepperOptions).
 [[nodiscard]] inline StepperOptions default_stepper_options() noexcept { return {}; }

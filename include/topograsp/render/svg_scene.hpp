@@ -23,50 +23,10 @@
 #include <topograsp/geometry/model_shapes.hpp>
 #include <topograsp/io/text_file.hpp>
 #include <topograsp/render/detail/svg_mesh.hpp>
+#include <topograsp/render/svg_camera.hpp>
 #include <topograsp/task/hand_curve.hpp>
 
 namespace topograsp {
-
-/// A colour as 8-bit red, green and blue.
-struct Rgb {
-  std::uint8_t r = 0, g = 0, b = 0;
-  friend constexpr bool operator==(const Rgb&, const Rgb&) = default;
-};
-
-/// The colours the figures use: one per kind of body, and the curve palette (the same as
-/// SvgLinePlot's series colours, so that gamma_i has one colour in every figure).
-namespace svg_colours {
-inline constexpr Rgb skin{226, 180, 150};   ///< a human hand
-inline constexpr Rgb robot{168, 176, 188};  ///< a robot hand (aluminium)
-inline constexpr Rgb wood{200, 150, 90};    ///< a wooden handle
-inline constexpr Rgb steel{110, 116, 128};  ///< a steel part
-inline constexpr Rgb object{96, 150, 210};  ///< any other object
-/// The colour of hand curve \p i (0-based), cycling through 7 colours.
-[[nodiscard]] constexpr Rgb curve(std::size_t i) noexcept {
-  constexpr Rgb palette[] = {{31, 119, 180},  {214, 39, 40}, {44, 160, 44}, {255, 127, 14},
-                             {148, 103, 189}, {140, 86, 75}, {23, 190, 207}};
-  return palette[i % 7];
-}
-}  // namespace svg_colours
-
-/// An orthographic camera and the image settings of one rendering.
-///
-/// The camera looks along \c direction; \c up (projected) points up in the image. With \c zoom
-/// 0 the scene is fitted into the image (minus \c margin, a title and a caption); otherwise
-/// \c zoom is pixels per metre and the image is centred on \c target (default: the centre of the
-/// scene's projected bounding box).
-struct SvgCamera {
-  Vec3 direction{-1.0, -0.35, -0.45};  ///< view direction, from the eye into the scene (world)
-  Vec3 up = Vec3::UnitZ();             ///< world direction shown upward; not along direction
-  double zoom = 0.0;                   ///< pixels per metre; 0 fits the scene
-  std::optional<Vec3> target;          ///< world point at the image centre (with zoom > 0)
-  int width = 480;                     ///< image width (px, >= 16)
-  int height = 400;                    ///< image height (px, >= 16)
-  double margin = 16.0;                ///< free border around a fitted scene (px)
-  int segments = 16;                   ///< polygons around a round shape (4..128)
-  double max_edge = 0.0;         ///< split flat parts longer than this (m); 0: a tenth of the scene
-  Vec3 light{-0.45, 0.6, 0.65};  ///< toward the light, in (right, up, toward the eye)
-};
 
 /// A scene of convex shapes, polylines and markers, rendered to SVG.
 ///
@@ -519,59 +479,8 @@ class SvgScene {
   std::string title_, caption_;
 };
 
-/// One panel of svg_panels(): a scene, its camera and a caption under it.
-struct SvgPanel {
-  SvgScene scene;
-  SvgCamera camera{};
-  std::string caption;   ///< under the panel; '\n' starts a new line
-  Rgb caption_colour{};  ///< e.g. green for a stable grasp, red for an unstable one
-};
-
-/// Several renderings side by side in one SVG document, each with its caption under it and
-/// \p title over them all. With \p common_scale, every panel whose camera has zoom 0 is drawn
-/// at the smallest of their fitted zooms, so that sizes compare across panels.
-/// \throws topograsp::invalid_argument naming the bad camera field of a panel.
-[[nodiscard]] inline std::string svg_panels(std::span<const SvgPanel> panels,
-                                            std::string_view title = {}, bool common_scale = true) {
-  double zoom = std::numeric_limits<double>::infinity();
-  if (common_scale)
-    for (const SvgPanel& p : panels)
-      if (p.camera.zoom == 0.0) {
-        const double z = p.scene.fit_zoom(p.camera);
-        if (z > 0.0) zoom = std::min(zoom, z);
-      }
-  const double gap = 12.0, top = title.empty() ? 0.0 : 34.0;
-  double width = 0.0, height = 0.0;
-  std::size_t caption_lines = 0;
-  for (const SvgPanel& p : panels) {
-    width += p.camera.width + (width > 0.0 ? gap : 0.0);
-    height = std::max(height, static_cast<double>(p.camera.height));
-    caption_lines = std::max(caption_lines, SvgScene::split_lines(p.caption).size());
-  }
-  const double total_h =
-      top + height + 18.0 * static_cast<double>(caption_lines) + (caption_lines > 0 ? 10.0 : 0.0);
-  const int w = std::max(16, static_cast<int>(std::ceil(width))),
-            h = std::max(16, static_cast<int>(std::ceil(total_h)));
-  std::string o;
-  if (!title.empty()) o += SvgScene::text(0.5 * w, 22.0, title, "middle", 16);
-  double x = 0.0;
-  for (const SvgPanel& p : panels) {
-    SvgCamera c = p.camera;
-    if (common_scale && c.zoom == 0.0 && std::isfinite(zoom)) c.zoom = zoom;
-    const std::string body = p.scene.svg_body(c);
-    o += "<svg x=\"" + detail::svg_number(x) + "\" y=\"" + detail::svg_number(top) + "\" width=\"" +
-         std::to_string(c.width) + "\" height=\"" + std::to_string(c.height) + "\" viewBox=\"0 0 " +
-         std::to_string(c.width) + " " + std::to_string(c.height) + "\">\n" + body + "</svg>\n";
-    const std::vector<std::string> lines = SvgScene::split_lines(p.caption);
-    for (std::size_t k = 0; k < lines.size(); ++k)
-      o += SvgScene::text(x + 0.5 * c.width, top + c.height + 16.0 + 18.0 * static_cast<double>(k),
-                          lines[k], "middle", 14, p.caption_colour);
-    x += c.width + gap;
-  }
-  return SvgScene::svg_document(w, h, o);
-}
-
-/// Writes the SVG document \p svg (from SvgScene::svg() or svg_panels()) to \p path.
+/// Writes the SVG document \p svg (from SvgScene::svg() or svg_panels(), render/svg_panels.hpp) to
+/// \p path.
 /// \throws topograsp::invalid_argument naming "path" if it cannot be written.
 inline void write_svg(const std::string& path, std::string_view svg) {
   detail::write_text_file(path, svg);

@@ -107,13 +107,7 @@ inline void require_step_catches_fall(const Eigen::Vector3d& g, const StepperOpt
 /// The checks of World's constructor (see World::World()).
 template <class S>
 void require_stepper_options(const StepperOptions& options) {
-  require_positive(options.time_step, "options.time_step");
-  if (options.iterations < 1 || options.iterations > 100)
-    throw_invalid_argument("options.iterations",
-                           "expected 1 to 100, got " + std::to_string(options.iterations));
-  if (options.substeps < 1 || options.substeps > 1000)
-    throw_invalid_argument("options.substeps",
-                           "expected 1 to 1000, got " + std::to_string(options.substeps));
+  validate_parameters(options, stepper_parameters, "options.");
   if (!std::isfinite(static_cast<S>(options.time_step)))
     throw_invalid_argument("options.time_step", "expected a step the scalar type can hold, got " +
                                                     number(options.time_step) + " s");
@@ -123,21 +117,10 @@ void require_stepper_options(const StepperOptions& options) {
         "a sub-step (time_step / substeps) of " + number(options.time_step / options.substeps) +
             " s is below what the scalar type divides by safely (" + number(min_length<S>()) + ")");
   for (std::size_t k = 0; k < 3; ++k) require_finite(options.gravity[k], "options.gravity");
-  require_positive(options.contact_hertz, "options.contact_hertz");
-  require_non_negative(options.contact_damping_ratio, "options.contact_damping_ratio");
-  require_positive(options.contact_push_max_speed, "options.contact_push_max_speed");
-  require_non_negative(options.kinematic_stiffness, "options.kinematic_stiffness");
-  require_non_negative(options.kinematic_damping_ratio, "options.kinematic_damping_ratio");
-  require_positive(options.kinematic_push_max_speed, "options.kinematic_push_max_speed");
-  require_non_negative(options.torsional_friction_radius, "options.torsional_friction_radius");
-  require_non_negative(options.speculative_distance, "options.speculative_distance");
-  require_positive(options.max_speed, "options.max_speed");
   if (!(static_cast<S>(options.max_speed) <= max_length<S>()))
     throw_invalid_argument("options.max_speed", "expected at most " + number(max_length<S>()) +
                                                     " m/s (its square must stay finite), got " +
                                                     number(options.max_speed));
-  require_non_negative(options.linear_damping, "options.linear_damping");
-  require_non_negative(options.angular_damping, "options.angular_damping");
   const Eigen::Vector3d g(options.gravity[0], options.gravity[1], options.gravity[2]);
   require_step_catches_fall(g, options, "options.time_step");
 }
