@@ -535,3 +535,39 @@ TEST_CASE("hands: package:// meshes are found in ROS's package layout") {
   CHECK(h.shapes[0].size[0] == Approx(0.01));
   fs::remove_all(root);
 }
+
+TEST_CASE("hands: a link that no chain of joints from the root reaches is refused") {
+  const auto urdf = [](const std::string& joints) {
+    return "<robot name=\"r\">\n<link name=\"a\"/><link name=\"b\"/><link name=\"c\"/>"
+           "<link name=\"d\"/><link name=\"e\"/>\n<joint name=\"ab\" type=\"fixed\"><parent "
+           "link=\"a\"/><child link=\"b\"/></joint>" +
+           joints + "</robot>";
+  };
+  const auto fixed = [](const char* parent, const char* child) {
+    return std::string("<joint name=\"") + parent + child + "\" type=\"fixed\"><parent link=\"" +
+           parent + "\"/><child link=\"" + child + "\"/></joint>";
+  };
+  // c and d joined to each other beside the tree a - b, e below them.
+  const std::string cycle = urdf(fixed("c", "d") + fixed("d", "c") + fixed("d", "e"));
+  const std::string why = import_failure(cycle);
+  CHECK(why ==
+        "hand.xml:1: <robot name=\"r\">: links not reached from the root \"a\": c (part of a "
+        "cycle of joints), d (part of a cycle of joints), e (below a cycle of joints)");
+  // With --root, a cycle is refused still; links above the root are the arm cut off.
+  ImportOptions root_b;
+  root_b.root = "b";
+  CHECK(import_failure(cycle, root_b).find("root \"b\": c (part of a cycle of joints)") !=
+        std::string::npos);
+  const ImportedHand cut = import_hand(
+      parse_xml(urdf(fixed("b", "c") + fixed("c", "d") + fixed("a", "e")), "hand.xml"), root_b);
+  REQUIRE(cut.links.size() == 3);
+  CHECK(cut.links[0].name.view() == "b");
+  // Without a cycle every link is imported, from URDF and MJCF alike (MJCF is nested: a tree).
+  CHECK(
+      import_hand(parse_xml(urdf(fixed("b", "c") + fixed("c", "d") + fixed("a", "e")), "hand.xml"))
+          .links.size() == 5);
+  CHECK(import_hand(parse_xml("<mujoco><worldbody><body name=\"a\"><body name=\"b\"/><body "
+                              "name=\"c\"><body name=\"d\"/></body></body></worldbody></mujoco>",
+                              "hand.xml"))
+            .links.size() == 4);
+}

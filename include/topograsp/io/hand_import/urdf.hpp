@@ -33,6 +33,44 @@ inline Eigen::Isometry3d urdf_origin(const Importer& im, const XmlElement& paren
   return T;
 }
 
+// Refuses links of the file that the import from `root` did not reach (out.links holds those it
+// did), naming each and why: part of a cycle of joints, below one, or (without --root, whose
+// purpose is to cut a hand off an arm) on no chain of joints from the root. A link the file
+// leaves out this way would be missing from the model without a word.
+inline void check_all_links_reached(const Importer& im, const XmlElement& robot,
+                                    const std::map<std::string, const XmlElement*>& links,
+                                    const std::map<std::string, const XmlElement*>& joint_of_child,
+                                    const ImportedHand& out, const std::string& root,
+                                    bool root_chosen) {
+  if (out.links.size() == links.size()) return;
+  std::string refused;
+  for (const auto& [name, e] : links) {
+    if (std::any_of(out.links.begin(), out.links.end(),
+                    [&](const LinkSpec& l) { return l.name.view() == name; }))
+      continue;
+    // Up the chain of parents until a link without one or a link seen before (a cycle).
+    std::vector<std::string> chain{name};
+    for (;;) {
+      const auto j = joint_of_child.find(chain.back());
+      if (j == joint_of_child.end()) break;
+      const std::string& parent = *child(*j->second, "parent")->attribute("link");
+      if (std::find(chain.begin(), chain.end(), parent) != chain.end()) {
+        chain.push_back(parent);
+        break;
+      }
+      chain.push_back(parent);
+    }
+    const bool cycle = joint_of_child.count(chain.back()) != 0;
+    if (!cycle && root_chosen) continue;  // above or beside the chosen root: cut off
+    refused += (refused.empty() ? "" : ", ") + name +
+               (!cycle                 ? " (on no chain of joints from the root)"
+                : chain.back() == name ? " (part of a cycle of joints)"
+                                       : " (below a cycle of joints)");
+  }
+  if (!refused.empty())
+    im.fail(robot, "links not reached from the root \"" + root + "\": " + refused);
+}
+
 // The links, shapes and notes of the URDF document doc, from options.root or its one root link.
 inline ImportedHand import_urdf(const XmlDocument& doc, const ImportOptions& options) {
   const Importer im{doc.file};
@@ -212,6 +250,7 @@ inline ImportedHand import_urdf(const XmlDocument& doc, const ImportOptions& opt
     for (auto it = next.rbegin(); it != next.rend(); ++it)
       stack.emplace_back(*child(**it, "child")->attribute("link"), *it);
   }
+  check_all_links_reached(im, robot, links, joint_of_child, out, root, !options.root.empty());
   for (const auto& [i, source] : mimics) {
     const int s = out.link_of_joint(source);
     if (s < 0)
