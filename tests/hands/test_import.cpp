@@ -571,3 +571,36 @@ TEST_CASE("hands: a link that no chain of joints from the root reaches is refuse
                               "hand.xml"))
             .links.size() == 4);
 }
+
+TEST_CASE("hands: a mesh with a vertex that is not finite is refused, naming the file and vertex") {
+  const auto failure = [](const std::string& path) {
+    try {
+      (void)import_hand_file(path);
+    } catch (const import_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  const std::string refused_dir = data_dir + "/refused";
+  const std::string why = failure(refused_dir + "/nan_vertex.urdf");
+  INFO(why);
+  CHECK(why.rfind(refused_dir + "/nan_vertex.urdf:6: <mesh>: the mesh \"" + refused_dir +
+                      "/nan_vertex.obj\" has a vertex that is not finite (vertex 2,",
+                  0) == 0);
+  // MJCF: a mesh geom, colliding or only weighed, and an infinite vertex.
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "topograsp_nan_mesh_test";
+  fs::create_directories(dir);
+  std::ofstream(dir / "inf.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 inf\nf 1 2 3\nf 1 2 4\n";
+  for (const char* contype : {"", " contype=\"0\" conaffinity=\"0\""}) {
+    std::ofstream(dir / "hand.xml")
+        << "<mujoco><asset><mesh name=\"m\" file=\"inf.obj\"/></asset><worldbody><body "
+           "name=\"a\"><geom type=\"mesh\" mesh=\"m\""
+        << contype << "/></body></worldbody></mujoco>";
+    const std::string mjcf_why = failure((dir / "hand.xml").string());
+    INFO(mjcf_why);
+    CHECK(mjcf_why.find("inf.obj\" has a vertex that is not finite (vertex 3,") !=
+          std::string::npos);
+  }
+  fs::remove_all(dir);
+}

@@ -160,15 +160,24 @@ inline Eigen::Isometry3d translation_of(const std::vector<double>& v) {
   return T;
 }
 
-// The STL (binary or ASCII) or OBJ mesh file at path (read_mesh_file); no vertices if it cannot
-// be read, and *why says why.
-inline TriangleMesh read_mesh(const std::string& path, std::string* why = nullptr) {
+// The STL (binary or ASCII) or OBJ mesh file at path (read_mesh_file), named by element e; no
+// vertices if it cannot be read, and *why says why. A vertex that is not finite (NaN, infinite)
+// fails, naming the mesh file and the vertex (its index in the mesh as read_mesh_file() gives
+// it): its box or volume would be wrong.
+inline TriangleMesh read_mesh(const Importer& im, const XmlElement& e, const std::string& path,
+                              std::string* why = nullptr) {
+  TriangleMesh m;
   try {
-    return read_mesh_file(path);
-  } catch (const mesh_error& e) {
-    if (why) *why = e.what();
+    m = read_mesh_file(path);
+  } catch (const mesh_error& error) {
+    if (why) *why = error.what();
     return {};
   }
+  for (std::size_t i = 0; i < m.vertices.size(); ++i)
+    if (!m.vertices[i].allFinite())
+      im.fail(e, "the mesh \"" + path + "\" has a vertex that is not finite (vertex " +
+                     std::to_string(i) + ", from 0, identical vertices merged)");
+  return m;
 }
 
 // The volume enclosed by a closed triangle mesh scaled by `scale`, and its centroid (MuJoCo
@@ -200,7 +209,7 @@ inline void add_box_of_mesh(const Importer& im, const XmlElement& e, const std::
                             const Vec3& scale, const Eigen::Isometry3d& pose, const Name& link,
                             bool skip_missing, ImportedHand& out) {
   std::string why;
-  const std::vector<Vec3> v = read_mesh(path, &why).vertices;
+  const std::vector<Vec3> v = read_mesh(im, e, path, &why).vertices;
   if (v.empty()) {
     if (!skip_missing)
       im.fail(

@@ -324,7 +324,7 @@ struct MjcfContext {
       const auto it = meshes.find(*m);
       if (it == meshes.end()) im.fail(g, "no mesh asset called \"" + *m + "\"");
       const auto& [path, scale] = it->second;
-      const TriangleMesh mesh = read_mesh(path);
+      const TriangleMesh mesh = read_mesh(im, g, path);
       std::pair<double, Vec3> mass{0.0, pose.translation()};
       if (!mesh.vertices.empty()) {
         const auto [volume, centroid] = mesh_volume(mesh, scale);
