@@ -78,6 +78,12 @@ int main(int argc, char** argv) {
   } catch (const topograsp::invalid_argument& e) {
     return wrong(std::string("--namespace: ") + e.what());
   }
+  try {  // a line break (or any control character) in a comment would end its line in HEADER
+    for (const std::string& c : comments)
+      (void)topograsp::detail::header_text(c, topograsp::detail::HeaderText::comment, "--comment");
+  } catch (const topograsp::invalid_argument& e) {
+    return wrong(e.what());
+  }
   std::string header;
   std::size_t links = 0, shapes = 0, frames = 0, notes = 0;
   try {

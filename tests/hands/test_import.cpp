@@ -604,3 +604,36 @@ TEST_CASE("hands: a mesh with a vertex that is not finite is refused, naming the
   }
   fs::remove_all(dir);
 }
+
+TEST_CASE("hands: text from the user or the file cannot break the generated header") {
+  using detail::header_text;
+  using detail::HeaderText;
+  // Control characters escaped (octal), or refused where asked; quotes and backslashes escaped in
+  // string literals; a backslash that would end a comment's line written \134.
+  CHECK(header_text("a\r\nb\x7f", HeaderText::comment) == "a\\015\\012b\\177");
+  CHECK(header_text("a\"b\\c\t", HeaderText::string) == "a\\\"b\\\\c\\011");
+  CHECK(header_text("dir\\x\\", HeaderText::comment) == "dir\\x\\134");
+  CHECK(header_text("a */ b", HeaderText::comment) == "a */ b");  // the header has // comments
+  test::check_throws_naming([] { (void)header_text("a\rb", HeaderText::comment, "comments"); },
+                            "comments");
+  ImportedHand h = import_hand_file(data_dir + "/three_finger.urdf");
+  test::check_throws_naming([&] { (void)model_header(h, "h", {"fine", "a\rb"}); }, "comments");
+  // A file name with a line break and a note with a carriage return and a trailing backslash:
+  // each stays on its comment line.
+  h.source = "/tmp/hand\n#error broken\r.urdf";
+  h.notes.push_back("a note\r#error broken\\");
+  const std::string header = model_header(h, "h", {"a comment ending in \\"});
+  CHECK(header.find("from hand\\012#error broken\\015.urdf (urdf)") != std::string::npos);
+  CHECK(header.find("// Note: a note\\015#error broken\\134\n") != std::string::npos);
+  CHECK(header.find("// a comment ending in \\134\n") != std::string::npos);
+  CHECK(header.find('\r') == std::string::npos);
+  // Every line that starts with # is one the writer means.
+  std::size_t lines = 0;
+  for (std::size_t at = 0; (at = header.find('\n', at)) != std::string::npos; ++at, ++lines) {
+    const bool meant = header.compare(at + 1, 1, "#") != 0 ||
+                       header.compare(at + 1, 7, "#pragma") == 0 ||
+                       header.compare(at + 1, 8, "#include") == 0;
+    CHECK(meant);
+  }
+  CHECK(lines > 10);
+}
