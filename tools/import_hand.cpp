@@ -5,8 +5,10 @@
 // runs it at build time.
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <string>
 #include <string_view>
+#include <system_error>
 #include <vector>
 
 #include <topograsp/io/hand_import.hpp>
@@ -29,6 +31,15 @@ constexpr const char* usage =
 int wrong(const std::string& why) {
   std::fprintf(stderr, "topograsp_import_hand: %s\n%s", why.c_str(), usage);
   return 2;
+}
+
+// Whether paths a and b name the same file: equivalent() when both exist (another spelling, a
+// link), else the same absolute path.
+bool same_file(const std::string& a, const std::string& b) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(a, ec) && fs::exists(b, ec)) return fs::equivalent(a, b, ec);
+  return fs::absolute(a, ec).lexically_normal() == fs::absolute(b, ec).lexically_normal();
 }
 
 }  // namespace
@@ -84,6 +95,8 @@ int main(int argc, char** argv) {
   } catch (const topograsp::invalid_argument& e) {
     return wrong(e.what());
   }
+  if (same_file(file, out))
+    return wrong("--out " + out + " is FILE " + file + ": writing it would replace the file");
   std::string header;
   std::size_t links = 0, shapes = 0, frames = 0, notes = 0;
   try {
