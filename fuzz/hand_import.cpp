@@ -7,7 +7,10 @@
 //   own (links first the root, parents earlier, names unique over links and frames and at most 31
 //   characters, finite limits in order, non-zero axes, couplings to actuated joints, shapes and
 //   frames on known links with positive sizes, finite numbers within the model's ranges).
-// - model_header() writes the hand, naming every link.
+// - A URDF hand holds every <link> of the file (no link is dropped for want of a joint from the
+//   root: a cycle beside the tree is refused).
+// - model_header() writes the hand, naming every link, with no control character but the line
+//   ends (nothing from the file can break a comment or a string literal).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -115,7 +118,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (const std::string bad = refusal(hand); !bad.empty())
       fuzz_fail("hand_import", "imported what make_model() refuses: " + bad,
                 "text = " + c_literal(text));
+    if (hand.format == topograsp::HandFileFormat::urdf) {
+      const topograsp::XmlDocument doc = topograsp::parse_xml(text, k_file);
+      const auto n = std::count_if(doc.root.children.begin(), doc.root.children.end(),
+                                   [](const topograsp::XmlElement& e) { return e.name == "link"; });
+      if (static_cast<std::size_t>(n) != hand.links.size())
+        fuzz_fail("hand_import",
+                  "imported " + std::to_string(hand.links.size()) + " of the file's " +
+                      std::to_string(n) + " links",
+                  "text = " + c_literal(text));
+    }
     const std::string header = topograsp::model_header(hand, "fuzz");
+    for (const char c : header)
+      if ((static_cast<unsigned char>(c) < 0x20 && c != '\n') || c == 0x7f)
+        fuzz_fail("hand_import", "a control character in the header", "text = " + c_literal(text));
     for (const topograsp::LinkSpec& l : hand.links)
       if (header.find("\"" + std::string(l.name.view()) + "\"") == std::string::npos)
         fuzz_fail("hand_import", "the header does not name link " + c_literal(l.name.view()),
