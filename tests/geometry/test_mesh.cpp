@@ -73,3 +73,47 @@ TEST_CASE("mesh_problems says what is wrong and where", "[geometry][mesh][bad-in
                     Catch::StartsWith("mesh: ") && Catch::Contains("open"));
   CHECK_THROWS_WITH(mesh_mass_properties(box, -1.0), Catch::Contains("density"));
 }
+
+TEST_CASE("every closed shell of a mesh must be wound outward", "[geometry][mesh][bad-input]") {
+  // Two disjoint boxes, 1 m^3 and 0.125 m^3. Wound outward they are one solid of 1.125 m^3.
+  TriangleMesh two = box_mesh(1, 1, 1);
+  const TriangleMesh small = box_mesh(0.5, 0.5, 0.5);
+  for (const Vec3& v : small.vertices) two.vertices.push_back(v + Vec3(2, 0, 0));
+  for (auto t : small.triangles) {
+    for (int& i : t) i += 8;
+    two.triangles.push_back(t);
+  }
+  CHECK(mesh_problems(two).empty());
+  CHECK(mesh_mass_properties(two, 1.0).mass == Approx(1.125).epsilon(1e-12));
+  // The small one wound inward: only the total volume's sign was checked, so it passed and
+  // weighed 0.875 for 1.125. Its shell is named by its first triangle, 12.
+  TriangleMesh inward = two;
+  for (std::size_t t = 12; t < inward.triangles.size(); ++t)
+    std::swap(inward.triangles[t][1], inward.triangles[t][2]);
+  CHECK(mesh_problems(inward) ==
+        std::vector<std::string>{"the shell of triangle 12 (12 triangles) encloses a volume that "
+                                 "is not positive (-0.125 m^3): it is wound inward"});
+  CHECK_THROWS_WITH(mesh_mass_properties(inward, 1.0),
+                    Catch::StartsWith("mesh: the shell of triangle 12 "));
+}
+
+TEST_CASE("coordinates too large to integrate are named as such, not as degenerate triangles",
+          "[geometry][mesh][bad-input]") {
+  // A 1e200 m cube: its areas overflow, which read as "triangle 0 ... has no area".
+  const std::vector<std::string> problems = mesh_problems(box_mesh(1e200, 1e200, 1e200));
+  CHECK(mentions(problems,
+                 "vertex 1 has a coordinate of magnitude 1e+200 m, more than 1e+06 m: "
+                 "coordinates too large"));
+  CHECK_FALSE(mentions(problems, "no area"));
+  CHECK(mentions(problems, "... and 4 more"));  // 7 of the 8 vertices
+  TriangleMesh far = box_mesh(1, 1, 1);
+  far.vertices[6].z() = -2e6;
+  CHECK(mesh_problems(far) ==
+        std::vector<std::string>{"vertex 6 has a coordinate of magnitude 2e+06 m, more than "
+                                 "1e+06 m: coordinates too large for the mesh's areas, volume "
+                                 "and inertia (is the mesh in metres?)"});
+  // At the bound the mass properties are finite, even at a dense material's density.
+  const MassProperties<> p = mesh_mass_properties(box_mesh(1e6, 1e6, 1e6), 2e4);
+  CHECK(p.mass == Approx(2e22));
+  CHECK(p.inertia.allFinite());
+}

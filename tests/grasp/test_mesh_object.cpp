@@ -101,3 +101,39 @@ TEST_CASE("mesh_object refuses bad input naming it", "[grasp][mesh][bad-input]")
   o.inertial->mass = 0.3;
   CHECK_THROWS_WITH(o.validate(), Catch::StartsWith("o.inertial.mass: "));
 }
+
+TEST_CASE("mesh_object refuses a mesh or spacing that needs too many surface points",
+          "[grasp][mesh][bad-input]") {
+  // The count is known before sampling: exactly what surface_points() returns.
+  const TriangleMesh can = test::cylinder_mesh(0.033, 0.115, 16);
+  CHECK(surface_point_count(can, 0.004) == static_cast<double>(surface_points(can, 0.004).size()));
+  CHECK(surface_point_count(can, 0.001) == static_cast<double>(surface_points(can, 0.001).size()));
+  // A 1 km cube and a 10 cm cube written in millimetres (100 m) sampled points until
+  // std::bad_alloc; now they are refused before sampling, naming the mesh, with the count, the
+  // limit and a hint about the unit.
+  for (const double side : {1000.0, 100.0}) {
+    INFO("side " << side);
+    CHECK_THROWS_WITH(
+        mesh_object("o", test::box_mesh(side, side, side), materials::pet, 1.0),
+        Catch::StartsWith("mesh: sampling its surface (") &&
+            Catch::Contains("every 0.004 m needs") &&
+            Catch::Contains("points, more than the limit of 4e+06 (max_surface_points)") &&
+            Catch::EndsWith("is the mesh in millimetres? scale it by 0.001"));
+  }
+  CHECK_THROWS_WITH(mesh_object("o", test::box_mesh(100, 100, 100), materials::pet, 1.0),
+                    Catch::Contains("(60000 m^2, bounding box 100 x 100 x 100 m)"));
+  // A spacing of 1e-6 m on a drink can: refused naming the option, no unit hint.
+  MeshObjectOptions fine;
+  fine.spacing = 1e-6;
+  CHECK_THROWS_WITH(mesh_object("o", can, materials::pet, 0.2, fine),
+                    Catch::StartsWith("options.spacing: sampling the mesh's surface (") &&
+                        Catch::Contains("every 1e-06 m needs") &&
+                        Catch::Contains("more than the limit of 4e+06") &&
+                        !Catch::Contains("millimetres"));
+  // surface_points() itself refuses, naming its own argument.
+  CHECK_THROWS_WITH(surface_points(can, 1e-6), Catch::StartsWith("spacing: "));
+  CHECK_THROWS_WITH(surface_points(test::box_mesh(1000, 1000, 1000), 0.004),
+                    Catch::StartsWith("mesh: "));
+  // A 1 m cube (a large object) at the default spacing is inside the limit.
+  CHECK(surface_point_count(test::box_mesh(1, 1, 1), 0.004) < max_surface_points / 4);
+}

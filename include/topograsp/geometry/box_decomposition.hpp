@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -21,6 +22,7 @@
 #include <topograsp/core/constants.hpp>
 #include <topograsp/core/eigen.hpp>
 #include <topograsp/core/error.hpp>
+#include <topograsp/core/parameters.hpp>
 #include <topograsp/geometry/mesh.hpp>
 
 namespace topograsp {
@@ -199,18 +201,86 @@ inline OrientedBox box_with_axes(std::span<const Vec3> points, const Mat3& R) {
   return out;
 }
 
+/// The most points surface_points() makes: 4e6, about 100 MB of points and some 400 MB and 20 s
+/// for box_decomposition() to split them. At 4 mm (MeshObjectOptions::spacing) that is a 2 m
+/// cube (3e6 points); the largest shipped YCB mesh, the cracker box, needs 33901, over 100 times
+/// fewer. A mesh in millimetres (1000 times larger, 1e6 times the points) is far beyond it.
+inline constexpr double max_surface_points = 4e6;
+
+namespace detail {
+
+// The grid steps along the longest edge of triangle t of mesh at spacing: surface_points()'s n.
+inline double surface_steps(const TriangleMesh& mesh, const std::array<int, 3>& t, double spacing) {
+  const Vec3 &a = mesh.vertices[static_cast<std::size_t>(t[0])],
+             &b = mesh.vertices[static_cast<std::size_t>(t[1])],
+             &c = mesh.vertices[static_cast<std::size_t>(t[2])];
+  return std::ceil(std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()}) / spacing);
+}
+
+}  // namespace detail
+
+/// How many points surface_points(\p mesh, \p spacing) returns, counted without making them (a
+/// double: it may be beyond every integer type); about twice the surface area over spacing^2.
+[[nodiscard]] inline double surface_point_count(const TriangleMesh& mesh, double spacing) {
+  double count = static_cast<double>(mesh.vertices.size());
+  for (const auto& t : mesh.triangles) {
+    const double n = detail::surface_steps(mesh, t, spacing);
+    count += std::max(0.0, (n + 1.0) * (n + 2.0) / 2.0 - 3.0);  // the grid without the corners
+  }
+  return count;
+}
+
+namespace detail {
+
+// Throws topograsp::invalid_argument unless surface_points(mesh, spacing) stays within
+// max_surface_points, saying how many it needs: naming mesh_name with a hint at millimetres when
+// the mesh is larger than 2 m (no object a hand grasps is), else spacing_name.
+inline void require_surface_point_count(const TriangleMesh& mesh, double spacing,
+                                        std::string_view spacing_name, std::string_view mesh_name) {
+  const double count = surface_point_count(mesh, spacing);
+  if (count <= max_surface_points) return;
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const Vec3& v : mesh.vertices) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  double area = 0.0;
+  for (const auto& t : mesh.triangles)
+    area += 0.5 * (mesh.vertices[static_cast<std::size_t>(t[1])] -
+                   mesh.vertices[static_cast<std::size_t>(t[0])])
+                      .cross(mesh.vertices[static_cast<std::size_t>(t[2])] -
+                             mesh.vertices[static_cast<std::size_t>(t[0])])
+                      .norm();
+  const Vec3 size = hi - lo;
+  const bool huge = size.maxCoeff() > 2.0;
+  throw_invalid_argument(
+      huge ? mesh_name : spacing_name,
+      std::string(huge ? "sampling its surface (" : "sampling the mesh's surface (") +
+          parameter_number(area) + " m^2, bounding box " + parameter_number(size.x()) + " x " +
+          parameter_number(size.y()) + " x " + parameter_number(size.z()) + " m) every " +
+          parameter_number(spacing) + " m needs " + parameter_number(count) +
+          " points, more than the limit of " + parameter_number(max_surface_points) +
+          " (max_surface_points); " +
+          (huge ? "is the mesh in millimetres? scale it by 0.001"
+                : "a larger spacing samples fewer"));
+}
+
+}  // namespace detail
+
 /// Points on the surface of \p mesh about \p spacing (m) apart: each triangle's vertices and a
 /// grid of points over it, as many as its area asks. Deterministic.
-/// \throws topograsp::invalid_argument naming "spacing" (not positive and finite).
+/// \throws topograsp::invalid_argument naming "spacing" (not positive and finite, or more points
+///         than max_surface_points) or "mesh" (more than max_surface_points and larger than 2 m:
+///         the message asks whether it is in millimetres).
 [[nodiscard]] inline std::vector<Vec3> surface_points(const TriangleMesh& mesh, double spacing) {
   require_positive(spacing, "spacing");
+  detail::require_surface_point_count(mesh, spacing, "spacing", "mesh");
   std::vector<Vec3> out(mesh.vertices);
   for (const auto& t : mesh.triangles) {
     const Vec3 &a = mesh.vertices[static_cast<std::size_t>(t[0])],
                &b = mesh.vertices[static_cast<std::size_t>(t[1])],
                &c = mesh.vertices[static_cast<std::size_t>(t[2])];
-    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-    const int n = static_cast<int>(std::ceil(longest / spacing));
+    const int n = static_cast<int>(detail::surface_steps(mesh, t, spacing));
     for (int i = 0; i <= n; ++i)
       for (int j = 0; i + j <= n; ++j) {
         if ((i == 0 && j == 0) || (i == n && j == 0) || (i == 0 && j == n)) continue;

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
 /// TriangleMesh: a closed triangle mesh of an object (vertices and triangles), the checks a mesh
-/// must pass before it can stand for a solid (finite, no degenerate triangle, closed, manifold,
-/// wound consistently), and its mass properties at a stated density (the divergence theorem over
-/// the signed tetrahedra from the origin to each triangle).
+/// must pass before it can stand for a solid (finite and not too large, no degenerate triangle,
+/// closed, manifold, wound consistently, every shell outward), and its mass properties at a stated
+/// density (the divergence theorem over the signed tetrahedra from the origin to each triangle).
 #pragma once
 
 #include <algorithm>
@@ -12,12 +12,14 @@
 #include <cstddef>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <topograsp/core/eigen.hpp>
 #include <topograsp/core/error.hpp>
+#include <topograsp/core/parameters.hpp>
 #include <topograsp/geometry/mass_properties.hpp>
 
 namespace topograsp {
@@ -29,7 +31,22 @@ struct TriangleMesh {
   std::vector<std::array<int, 3>> triangles;
 };
 
+/// The largest magnitude (m) of a vertex coordinate that mesh_problems() accepts. The mesh's
+/// formulas multiply coordinates: areas are of degree 2, the volume of degree 3, the inertia of
+/// degree 5; at 1e6 m that is at most about 1e30 per triangle, leaving some 270 orders of
+/// magnitude for the density and the triangle count, while 1e200 overflows an area. 1e6 m
+/// (1000 km) is far beyond any object a hand grasps, so no mesh in metres is refused by it.
+inline constexpr double max_mesh_coordinate = 1e6;
+
 namespace detail {
+
+// The signed volume of the tetrahedron from the origin to triangle t of mesh.
+inline double tetrahedron_volume(const TriangleMesh& mesh, const std::array<int, 3>& t) {
+  const Vec3 &a = mesh.vertices[static_cast<std::size_t>(t[0])],
+             &b = mesh.vertices[static_cast<std::size_t>(t[1])],
+             &c = mesh.vertices[static_cast<std::size_t>(t[2])];
+  return a.dot(b.cross(c)) / 6.0;
+}
 
 // The volume of the solid a closed mesh bounds and its first and second moments (integrals of x
 // and x x^T over it), by the signed tetrahedra from the origin to each triangle.
@@ -44,7 +61,7 @@ inline MeshMoments mesh_moments(const TriangleMesh& mesh) {
     const Vec3 &a = mesh.vertices[static_cast<std::size_t>(t[0])],
                &b = mesh.vertices[static_cast<std::size_t>(t[1])],
                &c = mesh.vertices[static_cast<std::size_t>(t[2])];
-    const double v = a.dot(b.cross(c)) / 6.0;  // the signed tetrahedron (0, a, b, c)
+    const double v = tetrahedron_volume(mesh, t);  // the signed tetrahedron (0, a, b, c)
     const Vec3 s = a + b + c;
     m.volume += v;
     m.first += v * s / 4.0;
@@ -71,18 +88,54 @@ inline MassProperties<> mesh_mass(const MeshMoments& m, double rho) {
   return p;
 }
 
+// A shell of a mesh: triangles connected through shared vertices (an edge shares two).
+struct MeshShell {
+  std::size_t first = 0;      // its first triangle
+  std::size_t triangles = 0;  // how many it has
+  double volume = 0.0;        // the signed volume it encloses (positive: wound outward)
+};
+
+// The shells of a mesh whose vertex indices are in range, in the order of their first triangles.
+inline std::vector<MeshShell> mesh_shells(const TriangleMesh& mesh) {
+  const auto index = [](int i) { return static_cast<std::size_t>(i); };
+  std::vector<std::size_t> parent(mesh.vertices.size());
+  std::iota(parent.begin(), parent.end(), std::size_t{0});
+  const auto root = [&](std::size_t v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const auto& t : mesh.triangles)
+    for (std::size_t k = 1; k < 3; ++k) parent[root(index(t[k]))] = root(index(t[0]));
+  std::vector<MeshShell> shells;
+  std::vector<std::size_t> shell_of(mesh.vertices.size(), shells.max_size());  // by root vertex
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    std::size_t& s = shell_of[root(index(mesh.triangles[t][0]))];
+    if (s == shells.max_size()) {
+      s = shells.size();
+      shells.push_back({t, 0, 0.0});
+    }
+    ++shells[s].triangles;
+    shells[s].volume += tetrahedron_volume(mesh, mesh.triangles[t]);
+  }
+  return shells;
+}
+
 }  // namespace detail
 
 /// What is wrong with a mesh that should bound a solid: empty if nothing. Each problem says what
 /// and where (vertex or triangle indices, from 0), the first few of each kind:
 /// - a vertex that is not finite, or a triangle whose index is out of range;
+/// - a vertex coordinate larger in magnitude than max_mesh_coordinate (then nothing else is
+///   checked: the areas and volumes would overflow);
 /// - a degenerate triangle (area below 1e-12 of the squared bounding-box diagonal, or a repeated
 ///   vertex);
 /// - an open edge (in one triangle only: the mesh has a hole) or a non-manifold edge (in more
 ///   than two);
 /// - two triangles that run along a shared edge the same way (inconsistent winding);
-/// - a negative enclosed volume (every triangle wound inward), or a volume or moments that
-///   overflow (coordinates too large).
+/// - a shell (triangles connected through shared vertices) whose enclosed volume is not positive
+///   (its triangles wound inward), named by its first triangle: every shell must be wound
+///   outward, so a cavity given as an inner shell wound inward is refused; or a volume or moments
+///   that overflow.
 [[nodiscard]] inline std::vector<std::string> mesh_problems(const TriangleMesh& mesh) {
   constexpr std::size_t shown = 3;  // problems of each kind that are spelled out
   std::vector<std::string> out;
@@ -90,11 +143,27 @@ inline MassProperties<> mesh_mass(const MeshMoments& m, double rho) {
   const auto report = [&](const std::string& kind, const std::string& what) {
     if (++count[kind] <= shown) out.push_back(what);
   };
+  const auto summed = [&] {  // out with a line for each kind of which some were not spelled out
+    for (const auto& [kind, k] : count)
+      if (k > shown)
+        out.push_back("... and " + std::to_string(k - shown) + " more of the kind above (" + kind +
+                      ")");
+    return out;
+  };
   const auto n = static_cast<int>(mesh.vertices.size());
   if (mesh.triangles.empty()) return {"the mesh has no triangles"};
-  for (int i = 0; i < n; ++i)
-    if (!mesh.vertices[static_cast<std::size_t>(i)].allFinite())
+  for (int i = 0; i < n; ++i) {
+    const Vec3& v = mesh.vertices[static_cast<std::size_t>(i)];
+    if (!v.allFinite())
       report("vertex", "vertex " + std::to_string(i) + " is not finite");
+    else if (v.cwiseAbs().maxCoeff() > max_mesh_coordinate)
+      report("large", "vertex " + std::to_string(i) + " has a coordinate of magnitude " +
+                          detail::parameter_number(v.cwiseAbs().maxCoeff()) + " m, more than " +
+                          detail::parameter_number(max_mesh_coordinate) +
+                          " m: coordinates too large for the mesh's areas, volume and inertia "
+                          "(is the mesh in metres?)");
+  }
+  if (count.contains("large")) return summed();
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (const Vec3& v : mesh.vertices)
     if (v.allFinite()) {
@@ -141,20 +210,18 @@ inline MassProperties<> mesh_mass(const MeshMoments& m, double rho) {
       report("winding", edge(a, b) + " runs the same way in triangles " + std::to_string(ts[0]) +
                             " and " + std::to_string(ts[1]) + ": they are wound inconsistently");
   }
-  for (const auto& [kind, k] : count)
-    if (k > shown)
-      out.push_back("... and " + std::to_string(k - shown) + " more of the kind above (" + kind +
-                    ")");
-  if (out.empty()) {
-    const detail::MeshMoments m = detail::mesh_moments(mesh);
-    if (!std::isfinite(m.volume) || !m.first.allFinite() || !m.second.allFinite() ||
-        !detail::mesh_inertia(m, 1.0).allFinite())
-      out.push_back(
-          "the enclosed volume or its moments overflow: coordinates too large to integrate");
-    else if (!(m.volume > 0.0))
-      out.push_back("the enclosed volume is not positive: the triangles are wound inward");
-  }
-  return out;
+  if (!out.empty()) return summed();
+  const detail::MeshMoments m = detail::mesh_moments(mesh);
+  if (!std::isfinite(m.volume) || !m.first.allFinite() || !m.second.allFinite() ||
+      !detail::mesh_inertia(m, 1.0).allFinite())
+    return {"the enclosed volume or its moments overflow: coordinates too large to integrate"};
+  for (const detail::MeshShell& s : detail::mesh_shells(mesh))
+    if (!(s.volume > 0.0))
+      report("inward", "the shell of triangle " + std::to_string(s.first) + " (" +
+                           std::to_string(s.triangles) +
+                           " triangles) encloses a volume that is not positive (" +
+                           detail::parameter_number(s.volume) + " m^3): it is wound inward");
+  return summed();
 }
 
 /// Throws topograsp::invalid_argument naming \p argument with every problem of mesh_problems()

@@ -41,13 +41,17 @@ struct MeshObjectOptions {
 /// How far the boxes are from the mesh is decomposition_error(mesh, boxes, spacing).
 /// \throws topograsp::invalid_argument naming "mesh" (require_closed_mesh(): what is wrong and
 ///         where), "mass" (negative or not finite), "material.density" (not positive when the
-///         mass is not given), "options.spacing" or "options.decomposition" (box_decomposition()).
+///         mass is not given), "options.spacing" or "options.decomposition" (box_decomposition());
+///         before sampling, "options.spacing" or "mesh" when the surface needs more points than
+///         max_surface_points at that spacing ("mesh" when it is larger than 2 m, asking whether
+///         it is in millimetres).
 [[nodiscard]] inline GraspObject mesh_object(std::string name, const TriangleMesh& mesh,
                                              const Material& material, double mass = 0.0,
                                              const MeshObjectOptions& options = {}) {
   require_closed_mesh(mesh, "mesh");
   require_non_negative(mass, "mass");
   require_positive(options.spacing, "options.spacing");
+  detail::require_surface_point_count(mesh, options.spacing, "options.spacing", "mesh");
   require_valid(options.decomposition, "options.decomposition");
   if (mass == 0.0) require_positive(material.density, "material.density");
   const detail::MeshMoments moments = detail::mesh_moments(mesh);
