@@ -7,12 +7,14 @@
 // as DIR/<object>_<hypothesis>.json. This is how data/demonstrations/ was made (docs/transfer.md).
 //
 //   record_demonstrations --object NAME [--out DIR] [--count N] [--noise MM] [--seed S]
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <grasp_transfer/command_line.hpp>
 #include <topograsp/core/random.hpp>
@@ -43,6 +45,7 @@ struct Options {
 
 Options parse(std::span<char*> args) {
   Options o;
+  std::vector<std::string_view> seen;  // the options given so far
   for (std::size_t i = 1; i < args.size(); ++i) {
     const std::string_view a = args[i];
     if (a == "--help" || a == "-h") {
@@ -51,7 +54,12 @@ Options parse(std::span<char*> args) {
     }
     if (a != "--object" && a != "--out" && a != "--count" && a != "--noise" && a != "--seed")
       throw invalid_argument("unknown option " + detail::quote_argument(a) + " (--help)");
-    if (i + 1 == args.size()) detail::throw_invalid_argument(a, "expected a value");
+    if (std::find(seen.begin(), seen.end(), a) != seen.end())
+      detail::throw_invalid_argument(a, "given twice");
+    seen.push_back(a);
+    if (i + 1 == args.size() || std::string_view(args[i + 1]).empty() ||
+        std::string_view(args[i + 1]).starts_with("--"))
+      detail::throw_invalid_argument(a, "expected a value");
     const std::string_view v = args[++i];
     if (a == "--object") {
       o.object = v;

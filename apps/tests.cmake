@@ -112,6 +112,11 @@ expect_rejected(transfer_matrix end_to_end "unknown object|--objects anvil|--obj
                 "negative hypotheses|--max-hypotheses -1|--max-hypotheses: expected >= 0"
                 "unknown option|--hand allegro|unknown option \"--hand\""
                 "unwritable out|--out /proc/transfer_matrix|--out: cannot create the folder")
+# record_demonstrations is not built by the sanitizer build either.
+expect_rejected(record_demonstrations end_to_end
+                "a repeated option|--object can --count 1 --count 2|--count: given twice"
+                "an option as a value|--object --count|--object: expected a value"
+                "unknown object|--object anvil|--object: unknown object \"anvil\"")
 expect_refused_folder(transfer_matrix "a folder of other files without --force" ${bad}-matrix
                       MKFILE=${bad}-matrix/notes.txt
                       "--out: .* holds no matrix.json of transfer_matrix; use --force")

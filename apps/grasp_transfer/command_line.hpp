@@ -435,12 +435,12 @@ options:
 An option's value may not be empty nor start with "--".
 
 output folder: the run owns DIR/results.json, DIR/scenes/, DIR/figures/ and DIR/index.html.
-Everything is first written into DIR/.grasp_transfer-staging-<id>/, then committed: the old
-results.json is removed, scenes/, figures/ and index.html are replaced entirely (an earlier run's
-are removed even if this run writes none), and results.json is renamed into place last. A run
-that fails or is interrupted before the commit leaves the previous run untouched (its staging
-folder is removed by the next run into DIR); a results.json always describes exactly the scenes
-beside it. DIR is checked before any work: a non-empty DIR without a results.json of
+Everything is first written into DIR/.grasp_transfer-staging-<id>/, then committed: scenes/,
+figures/ and index.html are replaced entirely (an earlier run's are removed even if this run
+writes none), and the new results.json is renamed over the old one last, so DIR always has one.
+A run that fails or is interrupted before the commit leaves the previous run untouched (its
+staging folder is removed by the next run into DIR); a commit interrupted part way is finished
+by the next run into DIR. DIR is checked before any work: a non-empty DIR without a results.json of
 grasp_transfer is refused unless --force, and so is a DIR where another run is writing (give each
 --shard its own --out); DIR/results.json and DIR/index.html must be files, DIR/scenes and
 DIR/figures folders. Other files in DIR are left alone.

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -105,18 +106,61 @@ class ResultsJournal {
   std::ofstream out_;
 };
 
+namespace detail {
+
+// The hypothesis journalled on line \p line_number of the journal \p path: {"object": name,
+// "id": a whole number in [0, 2^31), "records": [grasp records of that object and id, each with
+// a "method" name]}. Throws naming "--resume", the file and the line otherwise.
+inline JournalEntry journal_entry(const Json& line, const std::filesystem::path& path,
+                                  int line_number) {
+  const auto refuse = [&](const std::string& problem) {
+    throw_invalid_argument("--resume", file_line_message(path.string(), line_number, problem) +
+                                           " (not a line grasp_transfer writes; start afresh "
+                                           "without --resume)");
+  };
+  const auto whole = [](const Json& j) {
+    return j.is_number() && j.as_number() >= 0.0 && j.as_number() < 2147483648.0 &&
+           j.as_number() == std::floor(j.as_number());
+  };
+  if (!line.is_object()) refuse("expected an object");
+  for (const char* key : {"object", "id", "records"})
+    if (!line.contains(key)) refuse(std::string("no \"") + key + "\"");
+  if (!line.at("object").is_string()) refuse("\"object\" is not a name");
+  if (!whole(line.at("id"))) refuse("\"id\" is not a whole number in [0, 2^31)");
+  if (!line.at("records").is_array()) refuse("\"records\" is not a list");
+  JournalEntry e;
+  e.object = line.at("object").as_string();
+  e.id = static_cast<int>(line.at("id").as_number());
+  for (const Json& r : line.at("records").as_array()) {
+    if (!r.is_object() || !r.contains("object") || !r.contains("id") || !r.contains("method") ||
+        !r.at("method").is_string())
+      refuse("a record without its object, id and method");
+    if (!r.at("object").is_string() || r.at("object").as_string() != e.object ||
+        !r.at("id").is_number() || r.at("id").as_number() != static_cast<double>(e.id))
+      refuse("a record of another hypothesis");
+    e.records.push_back(r);
+  }
+  return e;
+}
+
+}  // namespace detail
+
 /// The finished hypotheses of the journal \p path, written by a run whose config is \p config
 /// (every key but "jobs" must be equal). Reading stops at the first line that is not complete
 /// JSON (a run killed while writing it).
 /// \throws topograsp::invalid_argument naming "--resume" if the file cannot be read, its first
-/// line is not a config, or the config differs (the message names the first key that does).
+/// line is not a config, the config differs (the message names the first key that does), or a
+/// hypothesis's line is not one grasp_transfer writes (journal_entry: the message names the file
+/// and the line).
 [[nodiscard]] inline std::vector<JournalEntry> read_journal(const std::filesystem::path& path,
                                                             const Json& config) {
   const std::string text = detail::read_text_file(path, "--resume");
   std::vector<JournalEntry> out;
   std::size_t begin = 0;
+  int line_number = 0;
   bool first = true;
   while (begin < text.size()) {
+    ++line_number;
     const std::size_t end = text.find('\n', begin);
     if (end == std::string::npos) break;  // the last line was not finished
     Json line;
@@ -143,11 +187,7 @@ class ResultsJournal {
       first = false;
       continue;
     }
-    JournalEntry e;
-    e.object = line.at("object").as_string();
-    e.id = static_cast<int>(line.at("id").as_number());
-    e.records = line.at("records").as_array();
-    out.push_back(std::move(e));
+    out.push_back(detail::journal_entry(line, path, line_number));
   }
   return out;
 }

@@ -322,8 +322,9 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::cerr << "grasp_transfer: " << e.what() << '\n';
     if (committing)
-      std::cerr << "grasp_transfer: the commit failed part way; the output folder has no "
-                   "results.json, and the new run is in the staging folder named above\n";
+      std::cerr << "grasp_transfer: the commit failed part way; the output folder keeps the "
+                   "previous results.json, and the new run is in the staging folder named "
+                   "above: the next run into the folder finishes the commit first\n";
     else if (started)
       std::cerr << "grasp_transfer: the previous run in the output folder is untouched\n";
     return started ? 1 : 2;

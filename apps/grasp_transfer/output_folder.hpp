@@ -1,17 +1,19 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
-/// The output folder of a grasp-transfer run: checked before any work, written through a staging
-/// folder inside it, and committed so that a results.json always describes the files beside it.
+/// The output folder of a run: checked before any work, written through a staging folder inside
+/// it, and committed so that DIR always holds a complete results.json.
 ///
 /// The rule (docs/transfer.md): a run owns DIR/results.json, DIR/scenes/, DIR/figures/ and
 /// DIR/index.html and nothing else in DIR. Everything is written into
-/// DIR/.grasp_transfer-staging-<host>-<pid>-<token>/ first; commit() then removes the old
-/// results.json, replaces scenes/, figures/ and index.html entirely (removing an earlier run's
-/// even where this run wrote none), and renames results.json into place last. A run that fails
-/// or is interrupted before the commit leaves the previous run untouched; its staging folder is
-/// removed by the next run into DIR on the same host once its process has ended. A staging folder
-/// of a process that is still running (or of another host) makes the next run refuse DIR without
-/// --force: two runs never write into one folder at the same time.
+/// DIR/.grasp_transfer-staging-<host>-<pid>-<token>/ first; commit() then notes in the staging
+/// folder what it moves, replaces scenes/, figures/ and index.html entirely (removing an earlier
+/// run's even where this run wrote none), and renames results.json over the old one last (one
+/// atomic rename: DIR never lacks a results.json). A commit interrupted part way is finished by
+/// the next run into DIR before anything else. A run that fails or is interrupted before the
+/// commit leaves the previous run untouched; its staging folder is removed by the next run into
+/// DIR on the same host once its process has ended. A staging folder of a process that is still
+/// running (or of another host) makes the next run refuse DIR without --force: two runs never
+/// write into one folder at the same time.
 #pragma once
 
 #include <algorithm>
@@ -38,6 +40,9 @@
 #include <topograsp/io/text_file.hpp>
 
 namespace topograsp {
+
+/// The file in a staging folder that marks a commit under way: the entries staged, one a line.
+inline constexpr std::string_view commit_marker_name = ".commit";
 
 /// The "generator" of a results.json written by grasp_transfer (results_json): the mark by which
 /// OutputFolder recognises a folder that holds an earlier run.
@@ -153,11 +158,13 @@ class OutputFolder {
   /// neither a results.json written by grasp_transfer (is_grasp_transfer_results) nor a staging
   /// folder of an interrupted run (which proves that grasp_transfer wrote there: an interrupted
   /// commit leaves scenes/ without results.json). Nothing in DIR is changed then, except that DIR
-  /// may have been created. With \p force every staging folder is removed.
-  /// With \p keep_leftovers the staging folders of interrupted runs are kept instead and listed
-  /// by leftovers(), for the caller to take what it needs (grasp_transfer --resume reads their
-  /// journals) before remove_leftovers(). \p layout names what the run owns (grasp_transfer's
-  /// by default: the files above; transfer_matrix_layout: matrix.json, matrix.md, index.html).
+  /// may have been created. A commit that an ended process of this host left unfinished is
+  /// finished first (finish_commit). With \p force every other staging folder is removed, but
+  /// with \p keep_leftovers the staging folders of interrupted runs are kept instead (even with
+  /// \p force) and listed by leftovers(), for the caller to take what it needs (grasp_transfer
+  /// --resume reads their journals) before remove_leftovers(). \p layout names what the run owns
+  /// (grasp_transfer's by default: the files above; transfer_matrix_layout: matrix.json, matrix.md,
+  /// index.html).
   explicit OutputFolder(std::filesystem::path dir, bool force = false,
                         std::string_view argument = "dir", bool keep_leftovers = false,
                         const OutputLayout& layout = grasp_transfer_layout)
@@ -188,6 +195,17 @@ class OutputFolder {
                "\" exists and is not a regular file; remove it or choose "
                "another output folder");
     }
+    // An interrupted commit first: the new run was complete, so it is put in place.
+    std::vector<fs::path> interrupted;
+    for (fs::directory_iterator c(dir_, ec); !ec && c != fs::directory_iterator();
+         c.increment(ec)) {
+      const std::string name = c->path().filename().string();
+      if (name.starts_with(detail::staging_prefix(layout_)) &&
+          detail::staging_folder_abandoned(name, layout_) &&
+          fs::exists(c->path() / commit_marker_name, ec))
+        interrupted.push_back(c->path());
+    }
+    for (const fs::path& p : interrupted) finish_commit(p);
     bool foreign = false;
     std::vector<fs::path> leftovers;
     std::string live;  // a staging folder of a run that may still be going
@@ -221,7 +239,7 @@ class OutputFolder {
              "; use --force to write into it: the run then replaces " + replaced + " there");
     }
     leftovers_ = std::move(leftovers);
-    if (!keep_leftovers || force) remove_leftovers();
+    if (!keep_leftovers) remove_leftovers();
     staging_ = dir_ / detail::staging_folder_name(layout_);
     fs::create_directory(staging_, ec);
     if (ec) refuse("cannot write into " + shown + " (" + ec.message() + ")");
@@ -284,44 +302,80 @@ class OutputFolder {
   [[nodiscard]] const std::filesystem::path& staging() const noexcept { return staging_; }
   /// Whether commit() has succeeded.
   [[nodiscard]] bool committed() const noexcept { return committed_; }
-  /// Whether commit() was called (it may have failed part way; then DIR has no results.json).
+  /// Whether commit() was called (it may have failed part way; the next run into DIR finishes it).
   [[nodiscard]] bool commit_started() const noexcept { return committing_; }
 
-  /// Puts the staged run in place: removes DIR/results.json, replaces DIR/scenes, DIR/figures and
-  /// DIR/index.html by the staged ones (or removes them if none was staged), renames the staged
-  /// results.json into place last, and removes the staging folder. At every moment a
-  /// DIR/results.json present describes exactly the files beside it.
+  /// Puts the staged run in place: notes the staged entries in the staging folder
+  /// (commit_marker_name), replaces DIR/scenes, DIR/figures and DIR/index.html by the staged ones
+  /// (or removes them if none was staged), renames the staged results.json over DIR/results.json
+  /// last (atomically: DIR always has one), and removes the staging folder. A commit interrupted
+  /// part way (the process killed) is finished by the next OutputFolder on DIR.
   /// \throws topograsp::invalid_argument naming "commit" if it was committed already or a file
-  /// cannot be removed or moved (the message names it); DIR then has no results.json.
+  /// cannot be written, removed or moved (the message names it and where the new run stays).
   void commit() {
     namespace fs = std::filesystem;
     if (committing_) detail::throw_invalid_argument("commit", "commit() was called already");
     committing_ = true;
+    std::string staged;
+    std::error_code ec;
+    for (const auto& [name, is_folder] : owned())
+      if (fs::exists(staging_ / name, ec)) staged += std::string(name) + "\n";
+    try {
+      detail::write_text_file(staging_ / commit_marker_name, staged);
+    } catch (const invalid_argument& e) {
+      detail::throw_invalid_argument(
+          "commit", std::string(e.what()) + "; the new run stays in \"" + staging_.string() + "\"");
+    }
+    finish_commit(staging_);
+    committed_ = true;
+  }
+
+  /// Finishes the commit noted in the staging folder \p staging (commit_marker_name): each
+  /// entry the marker names that is still in \p staging replaces DIR's, each entry it does not
+  /// name is removed from DIR, the main file is renamed in last, and \p staging is removed. Each
+  /// step can be taken again, so an interrupted commit is finished by calling this once more.
+  /// \throws topograsp::invalid_argument naming "commit" if a file cannot be read, removed or
+  /// moved (the message names it).
+  void finish_commit(const std::filesystem::path& staging) {
+    namespace fs = std::filesystem;
     std::error_code ec;
     const auto check = [&](const char* what, const fs::path& p) {
       if (ec)
         detail::throw_invalid_argument(
             "commit", std::string("cannot ") + what + " \"" + p.string() + "\" (" + ec.message() +
-                          "); the new run stays in \"" + staging_.string() + "\"");
+                          "); the new run stays in \"" + staging.string() + "\"");
     };
-    const fs::path main = dir_ / main_file();
-    fs::remove(main, ec);
-    check("remove", main);
+    std::ifstream marker(staging / commit_marker_name, std::ios::binary);
+    if (!marker) {
+      ec = std::make_error_code(std::errc::io_error);
+      check("read", staging / commit_marker_name);
+    }
+    std::vector<std::string> staged;
+    for (std::string line; std::getline(marker, line);) staged.push_back(line);
+    const auto was_staged = [&](std::string_view name) {
+      return std::find(staged.begin(), staged.end(), name) != staged.end();
+    };
     for (const auto& [name, is_folder] : owned()) {
       if (name == main_file()) continue;
-      fs::remove_all(dir_ / name, ec);
-      check("remove", dir_ / name);
-      if (fs::exists(staging_ / name, ec)) {
-        fs::rename(staging_ / name, dir_ / name, ec);
+      const bool in_staging = fs::exists(staging / name, ec);
+      if (in_staging || !was_staged(name)) {  // else it was moved in already
+        fs::remove_all(dir_ / name, ec);
+        check("remove", dir_ / name);
+      }
+      if (in_staging) {
+        fs::rename(staging / name, dir_ / name, ec);
         check("move into place", dir_ / name);
       }
     }
-    if (fs::exists(staging_ / main_file(), ec)) {
-      fs::rename(staging_ / main_file(), main, ec);
+    const fs::path main = dir_ / main_file();
+    if (fs::exists(staging / main_file(), ec)) {
+      fs::rename(staging / main_file(), main, ec);  // replaces the old one at once
       check("move into place", main);
+    } else if (!was_staged(main_file())) {
+      fs::remove(main, ec);  // a run without a main file leaves none of an earlier run
+      check("remove", main);
     }
-    committed_ = true;
-    fs::remove_all(staging_, ec);  // what is left: nothing the run owns
+    fs::remove_all(staging, ec);  // what is left: nothing the run owns
   }
 
  private:

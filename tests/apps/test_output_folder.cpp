@@ -207,6 +207,39 @@ TEST_CASE("an output folder is staged and committed, results.json last", "[io][o
     out.commit();
     CHECK(listing(dir) == std::vector<std::string>{"results.json", "scenes"});
   }
+  SECTION("a commit killed part way is finished by the next run, and results.json never missing") {
+    // The state a kill leaves between the commit's renames: the new scenes moved in, the
+    // figures of run one still to be removed, the new results.json not yet renamed over the old.
+    const fs::path killed = dir / staging_name_of(ended_process());
+    put(killed / std::string(commit_marker_name), "results.json\nscenes\n");
+    fs::remove_all(dir / "scenes");
+    put(dir / "scenes" / "bottle_3_human.xml", "two");
+    put(killed / "results.json", results_text("two"));
+    CHECK(slurp(dir / "results.json") == results_text("one"));  // the old one stays meanwhile
+    OutputFolder out(dir);
+    CHECK_FALSE(fs::exists(killed));
+    CHECK(slurp(dir / "results.json") == results_text("two"));
+    CHECK(listing(dir) ==
+          std::vector<std::string>{out.staging().filename().string(), "results.json", "scenes"});
+    CHECK(listing(dir / "scenes") == std::vector<std::string>{"bottle_3_human.xml"});
+  }
+  SECTION("a commit under way in a running process is not finished by another") {
+    const fs::path live = dir / staging_name_of(::getpid());
+    put(live / std::string(commit_marker_name), "results.json\n");
+    put(live / "results.json", results_text("two"));
+    CHECK_THROWS_WITH(OutputFolder(dir), Catch::Contains("still going"));
+    CHECK(slurp(dir / "results.json") == results_text("one"));
+  }
+  SECTION("--resume --force keeps the interrupted runs' staging folders for their journals") {
+    const fs::path leftover = dir / staging_name_of(ended_process());
+    put(leftover / "journal.jsonl", "{}\n");
+    OutputFolder out(dir, true, "--out", true);
+    REQUIRE(out.leftovers().size() == 1);
+    CHECK(out.leftovers().front() == leftover);
+    CHECK(fs::exists(leftover / "journal.jsonl"));
+    out.remove_leftovers();
+    CHECK_FALSE(fs::exists(leftover));
+  }
   SECTION("a staging folder of a run still going is never removed without --force") {
     // This process is running: its staging folder stands for a concurrent run (a shard given
     // the same --out), which another run must not delete.

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <filesystem>
+#include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -71,4 +74,51 @@ TEST_CASE("the config names each recorded demonstration and the hash of its gras
   const Json second = results_config(o);
   CHECK(second.at("demonstrations").as_array().at(0).at("file").as_string() == "a.json");
   CHECK(detail::first_config_difference(first, second, {}) == "demonstrations");
+}
+
+TEST_CASE("a journal line that grasp_transfer did not write is refused naming the file and line",
+          "[io][results][bad-input]") {
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / "topograsp-journal-lines.jsonl";
+  ExperimentOptions o;
+  o.objects = {objects::bottle()};
+  o.methods = {TransferMethod::topological};
+  const Json config = results_config(o);
+  const auto journal_with = [&](const std::string& line) {
+    {
+      ResultsJournal j(path, config);
+    }  // the config line
+    std::ofstream(path, std::ios::app | std::ios::binary)
+        << "{\"object\": \"bottle\", \"id\": 0, \"records\": [{\"object\": \"bottle\", \"id\": 0, "
+           "\"method\": \"human\"}]}\n"
+        << line << "\n";
+  };
+  journal_with("{\"object\": \"bottle\", \"id\": 1, \"records\": []}");
+  const std::vector<JournalEntry> good = read_journal(path, config);
+  REQUIRE(good.size() == 2);
+  CHECK(good[0].records.size() == 1);
+  CHECK(good[1].id == 1);
+  const std::string at = "--resume: " + path.string() + ":3: ";
+  for (const auto& [line, problem] : std::vector<std::pair<std::string, std::string>>{
+           {"{\"object\": \"bottle\", \"id\": 1e300, \"records\": []}",
+            "\"id\" is not a whole number in [0, 2^31)"},
+           {"{\"object\": \"bottle\", \"id\": 2.5, \"records\": []}",
+            "\"id\" is not a whole number in [0, 2^31)"},
+           {"{\"object\": \"bottle\", \"id\": -1, \"records\": []}",
+            "\"id\" is not a whole number in [0, 2^31)"},
+           {"{\"object\": \"bottle\", \"id\": 1}", "no \"records\""},
+           {"{\"object\": 7, \"id\": 1, \"records\": []}", "\"object\" is not a name"},
+           {"[1, 2]", "expected an object"},
+           {"{\"object\": \"bottle\", \"id\": 1, \"records\": [{\"object\": \"bottle\", \"id\": 2, "
+            "\"method\": \"human\"}]}",
+            "a record of another hypothesis"},
+           {"{\"object\": \"bottle\", \"id\": 1, \"records\": [{\"object\": \"bottle\", \"id\": "
+            "1}]}",
+            "a record without its object, id and method"}}) {
+    INFO(line);
+    journal_with(line);
+    CHECK_THROWS_WITH(read_journal(path, config),
+                      Catch::StartsWith(at + problem) && Catch::Contains("without --resume"));
+  }
+  std::filesystem::remove(path);
 }

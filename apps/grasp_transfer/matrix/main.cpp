@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -273,7 +274,7 @@ int run(const Options& o, OutputFolder& folder) {
   for (const bool d : demonstrated) stable_demos += d;
   Json doc = Json::object();
   doc.set("generator", "topograsp transfer_matrix");
-  doc.set("seed", static_cast<double>(o.seed));
+  doc.set("seed", std::to_string(o.seed));  // a string: every 64-bit seed exactly
   doc.set("hypotheses", static_cast<int>(tasks.size()));
   doc.set("demonstrations", stable_demos);
   doc.set("second_judge", cells.empty() || cells.begin()->second.second ? "mujoco" : "none");
@@ -300,6 +301,11 @@ int run(const Options& o, OutputFolder& folder) {
 }  // namespace
 
 int main(int argc, char** argv) {
+#ifdef SIGXFSZ
+  // Past a file-size limit a write fails with EFBIG (a readable error, the previous outputs
+  // untouched) instead of the signal ending the process.
+  (void)std::signal(SIGXFSZ, SIG_IGN);
+#endif
   Options o;
   try {
     o = parse(std::span<char*>(argv + 1, static_cast<std::size_t>(argc - 1)));
