@@ -44,7 +44,8 @@ inline void check_all_links_reached(const Importer& im, const XmlElement& robot,
                                     bool root_chosen) {
   if (out.links.size() == links.size()) return;
   std::string refused;
-  for (const auto& [name, e] : links) {
+  for (const auto& entry : links) {
+    const std::string& name = entry.first;
     if (std::any_of(out.links.begin(), out.links.end(),
                     [&](const LinkSpec& l) { return l.name.view() == name; }))
       continue;
