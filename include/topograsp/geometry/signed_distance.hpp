@@ -144,8 +144,18 @@ namespace detail {
     }
   }
   if (epa(a, b, g.simplex, depth, n, pa, pb)) return inflate(-depth, pa, pb, n, ra, rb);
-  // EPA found no answer (GJK stops within 1e-12 m of the origin): with a cylinder no finite set
-  // of axes is exact, and the depth is reported as 0 (an open finding, docs/testing.md).
+  // EPA found no answer from GJK's final simplex: it degenerates (flat, or a point on the
+  // boundary of the Minkowski difference) when GJK stops on the origin within rounding. Seed EPA
+  // again with the support points along the corners of a regular tetrahedron, then of the
+  // opposite one: if the origin is inside either (every overlap but a graze), EPA's answer holds.
+  for (const double sign : {1.0, -1.0}) {
+    Simplex t;
+    for (const Vec3& u : {Vec3(1, 1, 1), Vec3(1, -1, -1), Vec3(-1, 1, -1), Vec3(-1, -1, 1)})
+      t.v[static_cast<std::size_t>(t.n++)] = minkowski_support(a, b, sign * u.normalized());
+    if (epa(a, b, t, depth, n, pa, pb)) return inflate(-depth, pa, pb, n, ra, rb);
+  }
+  // The cores only touch (or rounding defeated every seed): the touching contact between the
+  // centres.
   const Vec3 m = 0.5 * (a.p + b.p), diff = b.p - a.p;
   n = diff.norm() > 0.0 ? Vec3(diff.normalized()) : Vec3(Vec3::UnitZ());
   return inflate(0.0, m, m, n, ra, rb);
