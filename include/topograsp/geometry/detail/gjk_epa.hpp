@@ -273,7 +273,7 @@ struct GjkResult {
 /// falls back to a cruder answer).
 inline bool epa(const Primitive& A, const Primitive& B, Simplex s, double& depth, Vec3& normal,
                 Vec3& pa, Vec3& pb) noexcept {
-  constexpr int max_vertices = 128;
+  constexpr int max_vertices = 1024;
   constexpr int max_faces = 2 * max_vertices;
   std::array<SupportPoint, max_vertices> vert{};
   int nv = 0;
@@ -383,14 +383,14 @@ inline bool epa(const Primitive& A, const Primitive& B, Simplex s, double& depth
     if (answer(fb)) have = true;
     const SupportPoint w = minkowski_support(A, B, fb.n);
     const double gain = fb.n.dot(w.w) - fb.dist;
-    if (gain <= 1e-13 + 1e-12 * std::abs(fb.dist) || nv == max_vertices) break;
+    if (gain <= 1e-10 + 1e-10 * std::abs(fb.dist) || nv == max_vertices) break;
     // Remove every face that sees w and collect the horizon (edges of exactly one removed face).
-    const double eps_visible = 1e-14 * (1.0 + w.w.norm());
+    const double eps_visible = 1e-10 * (1.0 + w.w.norm());
     std::array<std::array<int, 2>, max_faces> edges{};
     int ne = 0;
     for (int f = 0; f < nf;) {
       const Face& fc = faces[static_cast<std::size_t>(f)];
-      if (fc.n.dot(w.w - W(fc.i[0])) > eps_visible) {
+      if (fc.n.dot(w.w - W(fc.i[0])) > -eps_visible) {
         for (int k = 0; k < 3; ++k) {
           const int a = fc.i[static_cast<std::size_t>(k)];
           const int b = fc.i[static_cast<std::size_t>((k + 1) % 3)];
