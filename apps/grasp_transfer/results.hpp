@@ -92,6 +92,18 @@ inline void set_stability(Json& rec, const StabilityResult* s) {
   rec.set("tests", tests);
 }
 
+// What closing did, for a grasp record (null when nothing was simulated): the object's motion
+// while the hand closed, released and settled (m, rad), and the contacts when closing ended.
+inline Json json_closing(const ClosingRecord* c) {
+  if (c == nullptr) return Json();
+  Json j = Json::object();
+  j.set("object_shift", c->object_shift);
+  j.set("object_turn", c->object_turn);
+  j.set("contacts", c->contacts);
+  j.set("touching_joints", c->touching_joints);
+  return j;
+}
+
 // The second judge's verdict and records, and the grasp's Ferrari-Canny epsilon, of a grasp
 // record (null when there is none).
 inline void set_second_and_quality(Json& rec, const std::optional<StabilityResult>& second,
@@ -192,6 +204,8 @@ inline void check_scene_names(const ExperimentOptions& options) {
   cfg.set("human_hold_fraction", options.transfer.sim.human_hold_fraction);
   cfg.set("judge", std::string(to_string(options.judge)));
   cfg.set("closing_steps", options.transfer.sim.close.closing_steps);
+  cfg.set("hold_object", options.transfer.sim.close.hold_object);
+  cfg.set("release_steps", options.transfer.sim.close.release_steps);
   cfg.set("stability",
           detail::json_stability_options(options.transfer.sim.stability,
                                          options.transfer.sim.scene.stepper.time_step));
@@ -237,6 +251,7 @@ inline void check_scene_names(const ExperimentOptions& options) {
   rec.set("plan_ms", 0.0);
   rec.set("sweeps", 0);
   rec.set("reason", g.stability.reason);
+  rec.set("closing", detail::json_closing(&g.closing));
   detail::set_stability(rec, &g.stability);
   detail::set_second_and_quality(rec, g.second, &g.quality, second_name);
   out.push_back(std::move(rec));
@@ -258,6 +273,7 @@ inline void check_scene_names(const ExperimentOptions& options) {
     // What the planner said of a planned transfer (AICO's termination, the virtual finger's
     // opposition), null if nothing.
     r.set("planner", t.planned && !t.reason.empty() ? Json(t.reason) : Json());
+    r.set("closing", detail::json_closing(t.planned ? &t.closing : nullptr));
     detail::set_stability(r, t.planned ? &t.stability : nullptr);
     detail::set_second_and_quality(r, t.planned ? t.second : std::nullopt,
                                    t.planned ? &t.quality : nullptr, second_name);
