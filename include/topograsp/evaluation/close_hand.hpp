@@ -40,12 +40,14 @@ struct CloseOptions {
   /// Whether the object is held still while the motors close the fingers (World::set_held()) and
   /// released after, as grasp-synthesis pipelines close on a static object (GraspIt's auto-grasp,
   /// DexGraspNet's validation; docs/evaluation.md, "The closing protocol"). Unheld, an object that
-  /// only one finger reaches first is pushed away before the others arrive. Default true.
-  bool hold_object = true;
-  /// Physics steps after the release, gravity still off and the hand holding, in which the object
-  /// settles into the grasp (a grasp whose forces do not balance moves it here, and
-  /// CloseResult::object_shift says how far); in [0, 1000000]. Default 15 (0.25 s).
-  int release_steps = 15;
+  /// only one finger reaches first is pushed away before the others arrive. Default false (the
+  /// protocol of the published results; grasp_transfer --closing held sets it).
+  bool hold_object = false;
+  /// Physics steps after the release, gravity still off and the motors still closing the fingers,
+  /// in which the object settles into the grasp (a grasp whose forces do not balance moves it here,
+  /// and CloseResult::object_shift says how far); in [0, 1000000]. Default 0 (--closing held: 15,
+  /// 0.25 s).
+  int release_steps = 0;
 };
 
 /// The numeric fields of CloseOptions with their valid ranges (close_hand() checks them).
@@ -148,7 +150,7 @@ std::array<bool, std::remove_cvref_t<decltype(M)>::n_links> links_after_joint(in
 /// options.closing_steps times with gravity off, the object held still (options.hold_object):
 /// each finger closes until it stalls on the object, pressing with what its motor gives, or
 /// reaches its limit. Then the object is released and the scene stepped options.release_steps
-/// times, gravity still off, the hand holding as below. The scene is left holding,
+/// times, gravity still off, the motors still closing the fingers. The scene is left holding,
 /// gravity restored: each closing joint's servo targets hold_targets() (it presses with
 /// hold_fraction of its limit where it stands, and resists a load stiffly up to its full limit);
 /// the moment closing ends, the reference of the stability tests. Works for any model whose joints
@@ -258,16 +260,15 @@ CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options
   if (options.hold_object) w.set_held(scene.object_body(), true);
   for (int k = 0; k < options.closing_steps && result.status == Status::success; ++k)
     result.status = scene.step();
+  // Released, the object settles into the grasp, the motors still closing the fingers after it.
   if (options.hold_object) w.set_held(scene.object_body(), false);
-  // Hold: the same torque where each finger stands, now as a position servo with its full limit;
-  // the object, released, settles into the grasp.
-  scene.set_joint_targets(hold_targets(scene, scene.joint_positions(), options.hold_fraction));
-  scene.set_effort_fraction(1.0);
   for (int k = 0; k < options.release_steps && result.status == Status::success; ++k)
     result.status = scene.step();
   w.set_gravity(gravity.template cast<double>());
   result.q_closed = scene.joint_positions();
+  // Hold: the same torque where each finger stands, now as a position servo with its full limit.
   scene.set_joint_targets(hold_targets(scene, result.q_closed, options.hold_fraction));
+  scene.set_effort_fraction(1.0);
   result.contacts = scene.hand_contacts();
   result.object_shift = (scene.object_com() - com_start).norm();
   result.object_turn =

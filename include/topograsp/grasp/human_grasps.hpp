@@ -73,11 +73,12 @@ struct GraspSimOptions {
   bool second_judge_decides = false;
   double contact_gap = 0.002;  ///< how close the approach brings the hand to the object (m)
   double standoff = 0.12;      ///< where the approach starts, back from the face (m)
-  /// How the human hand approaches a hypothesis: true (the default), palm first
-  /// (approach_palm_first(): the palm moves in until it meets the object, the fingers opening
-  /// where they would enter it, as a person grasping an object brings the palm to it); false,
-  /// until any link first touches (approach_until_contact(), usually the opposed thumb).
-  bool palm_first = true;
+  /// How the human hand approaches a hypothesis: true, palm first (approach_palm_first(): the
+  /// palm moves in until it meets the object, the fingers opening where they would enter it, as
+  /// a person grasping an object brings the palm to it); false (the default, the protocol of the
+  /// published results), until any link first touches (approach_until_contact(), usually the
+  /// opposed thumb).
+  bool palm_first = false;
 };
 
 /// The open pre-shape of the human hand the demonstrations start from, a power-grasp pre-shape:

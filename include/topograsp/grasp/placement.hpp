@@ -87,9 +87,10 @@ template <const auto& M>
 /// the base moves along the world direction \p direction until link \p palm (the palm) is \p gap
 /// from \p object, the fingers opening on the way wherever they would come closer than gap (each
 /// closing joint that carries such a link moved back toward its open limit by \p open_step at a
-/// time, LinkSpec::closing). Where the fingers can open no further the hand stops, short of
-/// the palm's contact, with them gap away. First the whole hand moves in until it is gap away
-/// (approach_until_contact()); then the palm advances by at most 5 mm at a time. Returns the
+/// time, LinkSpec::closing). Where the fingers can open no further the hand stops short of the
+/// palm's contact, a link that cannot open within 0.1 mm of gap. First the whole hand moves in
+/// until it is gap away (approach_until_contact()); then the palm advances by at most 5 mm at a
+/// time, in halved steps where it is blocked. Returns the
 /// configuration, or nothing if the hand misses the object within \p max_travel or starts
 /// closer than gap.
 template <const auto& M>
@@ -137,16 +138,21 @@ template <const auto& M>
     }
     return false;
   };
-  double travelled = 0.0;
+  double travelled = 0.0, max_step = 0.005;
   for (int iteration = 0; iteration < 1000; ++iteration) {
     distances(q);
     const double to_palm = link_distance[static_cast<std::size_t>(palm)] - gap;
     if (to_palm < 1e-5) return q;
-    const double step = std::min(to_palm, 0.005);
+    const double step = std::min(to_palm, max_step);
     if (travelled + step > max_travel) return q;
     Vec<M.nq> trial = q;
     trial.template head<3>() += step * u;
-    if (!open_fingers(trial)) return q;
+    if (!open_fingers(trial)) {
+      // Blocked: go on in halved steps, down to 0.1 mm.
+      max_step *= 0.5;
+      if (max_step < 1e-4) return q;
+      continue;
+    }
     q = trial;
     travelled += step;
   }
