@@ -237,11 +237,21 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
       cli.experiment.transfer.sim.stability.every_test = true;
       continue;
     }
-    constexpr std::string_view value_options[] = {
-        "--objects",       "--methods",        "--out",           "--jobs",
-        "--seed",          "--max-hypotheses", "--shard",         "--winding-reference",
-        "--set",           "--friction",       "--hold-fraction", "--judge",
-        "--demonstrations"};
+    constexpr std::string_view value_options[] = {"--objects",
+                                                  "--methods",
+                                                  "--out",
+                                                  "--jobs",
+                                                  "--seed",
+                                                  "--max-hypotheses",
+                                                  "--shard",
+                                                  "--winding-reference",
+                                                  "--set",
+                                                  "--friction",
+                                                  "--hold-fraction",
+                                                  "--judge",
+                                                  "--demonstrations",
+                                                  "--hypotheses",
+                                                  "--closing"};
     bool known = false;
     for (const std::string_view o : value_options) known = known || o == arg;
     if (!known)
@@ -310,6 +320,20 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
             arg, "expected a fraction of the motors' torque limits in (0, 1], got " +
                      detail::quote_argument(value));
       cli.experiment.transfer.sim.close.hold_fraction = f;
+    } else if (arg == "--hypotheses") {
+      cli.experiment.hypotheses =
+          enum_from_name(value, {HypothesisRule::box, HypothesisRule::demonstrator}, arg, "rule");
+    } else if (arg == "--closing") {
+      if (value != "free" && value != "held")
+        detail::throw_invalid_argument(
+            arg, "expected free or held, got " + detail::quote_argument(value));
+      // held: every hand closes on the object held still, released for 0.25 s (gravity off)
+      // before the tests, and the human hand approaches palm first (docs/evaluation.md).
+      const bool held = value == "held";
+      GraspSimOptions& sim = cli.experiment.transfer.sim;
+      sim.close.hold_object = held;
+      sim.close.release_steps = held ? 15 : 0;
+      sim.palm_first = held;
     } else if (arg == "--winding-reference") {
       cli.experiment.transfer.winding_reference =
           enum_from_name(value, {WindingReference::centre_of_mass, WindingReference::nearest_point},
@@ -413,6 +437,13 @@ options:
   --resume         skip the hypotheses that an interrupted run into DIR with the same options
                    finished (its journal), keeping their results and scenes
   --max-hypotheses M  only the first M hypotheses of each object (default 0: all)
+  --hypotheses R   the grasp hypotheses of the planned demonstrations: box (default, BADGr's 4
+                   rolls per reachable box face) or demonstrator (8 rolls per face, each also
+                   jittered once in position, tilt and roll by a seeded rule; docs/evaluation.md)
+  --closing C      free (default: the object is free while the hands close, and the human hand
+                   approaches until any link touches) or held (every hand closes on the object
+                   held still, which is then released for 0.25 s before the tests; the human
+                   hand approaches palm first)
   --winding-reference R  where the windings are taken: centre_of_mass (default, the paper)
                    or nearest_point (the object's point nearest the human's grasp centre)
   --friction MU    one Coulomb coefficient for every hand-object pair, in (0, 10], for a friction

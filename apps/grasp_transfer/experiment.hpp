@@ -20,6 +20,7 @@
 #include <vector>
 
 #include <topograsp/core/random.hpp>
+#include <topograsp/grasp/grasp_identity.hpp>
 #include <topograsp/grasp/keypoint_fit.hpp>
 #include <topograsp/grasp/transfer.hpp>
 
@@ -49,6 +50,15 @@ struct RecordedGrasp {
 };
 
 /// What to run.
+/// Which rule makes the grasp hypotheses of the planned demonstrations.
+enum class HypothesisRule : std::uint8_t {
+  box,           ///< box_hypotheses(): BADGr's, 4 per reachable box face
+  demonstrator,  ///< demonstrator_hypotheses(): 8 rolls per face, each also jittered once
+};
+[[nodiscard]] constexpr std::string_view to_string(HypothesisRule r) noexcept {
+  return r == HypothesisRule::demonstrator ? "demonstrator" : "box";
+}
+
 struct ExperimentOptions {
   std::vector<GraspObject> objects;     ///< default: the paper's hammer and bottle
   std::vector<TransferMethod> methods;  ///< default: all three
@@ -72,6 +82,12 @@ struct ExperimentOptions {
   /// transferred if stable; an object's k-th recording (in this order) is its hypothesis k. Every
   /// recording's object must be one of `objects`.
   std::vector<RecordedGrasp> demonstrations;
+  /// How the planned demonstrations are made: box_hypotheses (BADGr's 4 per reachable box face,
+  /// the default) or demonstrator_hypotheses (8 rolls per face, each also jittered once,
+  /// grasp_transfer --hypotheses demonstrator).
+  HypothesisRule hypotheses = HypothesisRule::box;
+  /// When two stable demonstrations count as the same grasp (grasp_clusters()).
+  GraspTolerance grasp_tolerance{};
 };
 
 /// The numbers of one method on one object.
@@ -115,16 +131,6 @@ struct ObjectResult {
   return out;
 }
 
-/// The 64-bit FNV-1a hash of \p text.
-[[nodiscard]] constexpr std::uint64_t fnv1a_64(std::string_view text) noexcept {
-  std::uint64_t h = 0xcbf29ce484222325ull;
-  for (const char c : text) {
-    h ^= static_cast<unsigned char>(c);
-    h *= 0x100000001b3ull;
-  }
-  return h;
-}
-
 /// The seed of the stability suite of grasp \p id of the object called \p object: the object's
 /// name hashed (FNV-1a), then a SplitMix64 mix. The human demonstration and every method's transfer
 /// of it share the seed, so every method meets the same shake, the same six directions and the
@@ -133,7 +139,7 @@ struct ObjectResult {
 /// run or the shard, so any split of a run reproduces the whole.
 [[nodiscard]] constexpr std::uint64_t grasp_seed(std::uint64_t seed, std::string_view object,
                                                  int id) noexcept {
-  return detail::splitmix64_mix(seed ^ detail::splitmix64_mix(fnv1a_64(object)) ^
+  return detail::splitmix64_mix(seed ^ detail::splitmix64_mix(detail::fnv1a_64(object)) ^
                                 (0xbf58476d1ce4e5b9ull * static_cast<std::uint64_t>(id + 1)));
 }
 
@@ -309,7 +315,10 @@ std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& o
   std::vector<std::vector<std::size_t>> task_of(no);  // [object][k]: the task of its k-th id
   for (std::size_t oi = 0; oi < no; ++oi) {
     results[oi].object = options.objects[oi];
-    if (options.demonstrations.empty()) hyps[oi] = box_hypotheses(options.objects[oi]);
+    if (options.demonstrations.empty())
+      hyps[oi] = options.hypotheses == HypothesisRule::demonstrator
+                     ? demonstrator_hypotheses(options.objects[oi], options.seed)
+                     : box_hypotheses(options.objects[oi]);
     for (const RecordedGrasp& r : options.demonstrations)
       if (r.grasp.object == options.objects[oi].name) recorded[oi].push_back(&r);
     const int n =

@@ -100,6 +100,8 @@ void print_table(const Json& doc) {
   row("Stable grasps", [&](const Json& o) {
     return paper(o.at("name").as_string(), 1) + " | " + o.at("stable_human").dump(0);
   });
+  row("  distinct (up to symmetry)",
+      [&](const Json& o) { return "- | " + o.at("distinct_human").dump(0); });
   for (const std::string& m : methods) {
     const int paper_row = m == "transplant" ? 2 : m == "topological" || m == "paper" ? 3 : -1;
     row(label(m), [&](const Json& o) {
@@ -123,6 +125,15 @@ void print_table(const Json& doc) {
                    : percent(j.at("stable_second"), s.at("tested"), j.at("interval_second"));
       });
   }
+  header("One demonstration per distinct grasp (" + first_name +
+         (second ? " | " + second_name : std::string()) + ")");
+  for (const std::string& m : methods)
+    row(label(m), [&](const Json& o) {
+      const Json& d = summary(o, m).at("distinct");
+      std::string text = percent(d.at("stable"), d.at("tested"), d.at("interval"));
+      if (second && !d.at("stable_second").is_null()) text += " | " + d.at("stable_second").dump(0);
+      return text;
+    });
   if (std::find(methods.begin(), methods.end(), "topological") == methods.end() ||
       methods.size() < 2)
     return;
@@ -130,10 +141,13 @@ void print_table(const Json& doc) {
   std::printf("(held by this method only | by topological only, McNemar's exact p)\n");
   for (const std::string& m : methods) {
     if (m == "topological") continue;
-    for (const char* key : {"paired", "paired_second"}) {
-      if (key == std::string_view("paired_second") && !second) continue;
+    for (const char* key :
+         {"paired", "paired_second", "paired_distinct", "paired_distinct_second"}) {
+      const std::string_view k = key;
+      if (k.ends_with("_second") && !second) continue;
       const std::string engine =
-          !second ? "" : ", " + (key == std::string_view("paired") ? first_name : second_name);
+          (!second ? std::string() : ", " + (k.ends_with("_second") ? second_name : first_name)) +
+          (k.starts_with("paired_distinct") ? ", distinct" : "");
       row(label(m) + engine, [&](const Json& o) {
         const Json& c = summary(o, m).at(key);
         if (c.is_null()) return std::string("-");

@@ -15,6 +15,7 @@
 #include <grasp_transfer/output_folder.hpp>
 #include <grasp_transfer/summaries.hpp>
 #include <topograsp/evaluation/statistics.hpp>
+#include <topograsp/grasp/grasp_identity.hpp>
 #include <topograsp/io/json.hpp>
 #include <topograsp/io/keypoint_grasp.hpp>
 #include <topograsp/io/mjcf.hpp>
@@ -90,6 +91,71 @@ inline void set_stability(Json& rec, const StabilityResult* s) {
   rec.set("closing_penetration", s != nullptr ? Json(s->closing_penetration) : Json());
   rec.set("collider_error", s != nullptr ? Json(s->collider_error) : Json());
   rec.set("tests", tests);
+}
+
+// A pose as {"position": [x, y, z] (m), "quaternion": [w, x, y, z]} (w first, as MuJoCo).
+inline Json json_pose(const Eigen::Isometry3d& T) {
+  const Eigen::Quaterniond q(T.linear());
+  Json j = Json::object();
+  j.set("position", json_vector(Vec3(T.translation())));
+  j.set("quaternion", json_vector(Eigen::Vector4d(q.w(), q.x(), q.y(), q.z())));
+  return j;
+}
+
+// The n numbers of a JSON array, or an error naming results.json's `what`.
+inline Eigen::VectorXd numbers(const Json& a, int n, const char* what) {
+  const Json::Array& v = a.as_array();
+  if (static_cast<int>(v.size()) != n)
+    detail::throw_invalid_argument(
+        what, "expected " + std::to_string(n) + " numbers, got " + std::to_string(v.size()));
+  Eigen::VectorXd x(n);
+  for (int i = 0; i < n; ++i) x[i] = v[static_cast<std::size_t>(i)].as_number();
+  return x;
+}
+
+// The pose of a record's json_pose.
+inline Eigen::Isometry3d pose_of(const Json& j) {
+  const Eigen::VectorXd p = numbers(j.at("position"), 3, "hand_pose.position");
+  const Eigen::VectorXd q = numbers(j.at("quaternion"), 4, "hand_pose.quaternion");
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.translation() = p;
+  T.linear() = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
+  return T;
+}
+
+// An object's symmetry for results.json's config, and back.
+inline Json json_symmetry(const ObjectSymmetry& s) {
+  Json j = Json::object();
+  j.set("centre", json_vector(s.centre));
+  Json rotations = Json::array();
+  for (const Mat3& R : s.rotations)
+    rotations.push_back(json_vector(Eigen::Map<const Eigen::Matrix<double, 9, 1>>(R.data())));
+  j.set("rotations", rotations);
+  j.set("axis", s.axis ? json_vector(*s.axis) : Json());
+  j.set("isotropic", s.isotropic);
+  return j;
+}
+inline ObjectSymmetry symmetry_of(const Json& j) {
+  ObjectSymmetry s;
+  s.centre = numbers(j.at("centre"), 3, "config.symmetry");
+  s.rotations.clear();
+  for (const Json& r : j.at("rotations").as_array())
+    s.rotations.push_back(Eigen::Map<const Mat3>(numbers(r, 9, "config.symmetry").data()));
+  if (!j.at("axis").is_null()) s.axis = Vec3(numbers(j.at("axis"), 3, "config.symmetry"));
+  s.isotropic = j.at("isotropic").as_bool();
+  return s;
+}
+
+// What closing did, for a grasp record (null when nothing was simulated): the object's motion
+// while the hand closed, released and settled (m, rad), and the contacts when closing ended.
+inline Json json_closing(const ClosingRecord* c) {
+  if (c == nullptr) return Json();
+  Json j = Json::object();
+  j.set("object_shift", c->object_shift);
+  j.set("object_turn", c->object_turn);
+  j.set("contacts", c->contacts);
+  j.set("touching_joints", c->touching_joints);
+  return j;
 }
 
 // The second judge's verdict and records, and the grasp's Ferrari-Canny epsilon, of a grasp
@@ -175,9 +241,9 @@ inline void check_scene_names(const ExperimentOptions& options) {
     Json sources = Json::array();
     for (const RecordedGrasp& r : options.demonstrations) {
       char hash[17];
-      std::snprintf(
-          hash, sizeof hash, "%016llx",
-          static_cast<unsigned long long>(fnv1a_64(keypoint_grasp_json(r.grasp, r.source))));
+      std::snprintf(hash, sizeof hash, "%016llx",
+                    static_cast<unsigned long long>(
+                        detail::fnv1a_64(keypoint_grasp_json(r.grasp, r.source))));
       Json d = Json::object();
       d.set("file", r.source);
       d.set("fnv1a_64", std::string(hash));
@@ -192,10 +258,24 @@ inline void check_scene_names(const ExperimentOptions& options) {
   cfg.set("human_hold_fraction", options.transfer.sim.human_hold_fraction);
   cfg.set("judge", std::string(to_string(options.judge)));
   cfg.set("closing_steps", options.transfer.sim.close.closing_steps);
+  cfg.set("hypotheses", std::string(to_string(options.hypotheses)));
+  cfg.set("palm_first", options.transfer.sim.palm_first);
+  cfg.set("hold_object", options.transfer.sim.close.hold_object);
+  cfg.set("release_steps", options.transfer.sim.close.release_steps);
   cfg.set("stability",
           detail::json_stability_options(options.transfer.sim.stability,
                                          options.transfer.sim.scene.stepper.time_step));
   cfg.set("aico_steps", options.transfer.aico.steps);
+  // Which demonstrations are the same grasp (the clusters of results_document).
+  Json symmetry = Json::object();
+  for (const GraspObject& o : options.objects)
+    symmetry.set(o.name, detail::json_symmetry(object_symmetry(o)));
+  cfg.set("symmetry", symmetry);
+  Json tolerance = Json::object();
+  tolerance.set("position", options.grasp_tolerance.position);
+  tolerance.set("angle", options.grasp_tolerance.angle);
+  tolerance.set("joint", options.grasp_tolerance.joint);
+  cfg.set("grasp_tolerance", tolerance);
   Json transfer = Json::object();
   for (const TransferParameter& p : transfer_parameters)
     transfer.set(std::string(p.name), p.get(options.transfer));
@@ -230,6 +310,16 @@ inline void check_scene_names(const ExperimentOptions& options) {
     rec.set("fit_error", e);
   }
   rec.set("shake_seed", seed);
+  if (options.demonstrations.empty()) {  // the hypothesis a planned demonstration comes from
+    Json h = Json::object();
+    h.set("box", g.hypothesis.box);
+    h.set("face", g.hypothesis.face);
+    h.set("roll",
+          options.hypotheses == HypothesisRule::box ? g.hypothesis.turn * 2 : g.hypothesis.roll);
+    h.set("jitter_seed",
+          g.hypothesis.jitter_seed == 0 ? Json() : Json(std::to_string(g.hypothesis.jitter_seed)));
+    rec.set("hypothesis", h);
+  }
   rec.set("stable", g.stable());
   rec.set("scene", scene_path(object.name, g.id, "human"));
   rec.set("winding_human", detail::json_vector(g.windings));
@@ -237,6 +327,10 @@ inline void check_scene_names(const ExperimentOptions& options) {
   rec.set("plan_ms", 0.0);
   rec.set("sweeps", 0);
   rec.set("reason", g.stability.reason);
+  rec.set("closing", detail::json_closing(&g.closing));
+  // The palm (the hand's root link) in the object's frame when closing ended, and the joints.
+  rec.set("hand_pose", detail::json_pose(g.object_pose.inverse() * g.hand_pose));
+  rec.set("joints", detail::json_vector(g.q));
   detail::set_stability(rec, &g.stability);
   detail::set_second_and_quality(rec, g.second, &g.quality, second_name);
   out.push_back(std::move(rec));
@@ -258,6 +352,7 @@ inline void check_scene_names(const ExperimentOptions& options) {
     // What the planner said of a planned transfer (AICO's termination, the virtual finger's
     // opposition), null if nothing.
     r.set("planner", t.planned && !t.reason.empty() ? Json(t.reason) : Json());
+    r.set("closing", detail::json_closing(t.planned ? &t.closing : nullptr));
     detail::set_stability(r, t.planned ? &t.stability : nullptr);
     detail::set_second_and_quality(r, t.planned ? t.second : std::nullopt,
                                    t.planned ? &t.quality : nullptr, second_name);
@@ -265,6 +360,74 @@ inline void check_scene_names(const ExperimentOptions& options) {
   }
   return out;
 }
+
+namespace detail {
+
+// Sets "cluster" on the records of one object (\p name): each stable demonstration's is the id of
+// the first demonstration of its cluster (grasp_clusters() with the config's symmetry of the
+// object and grasp_tolerance), each transfer's that of its demonstration, null for the rest.
+inline void set_clusters(const Json& config, const std::string& name, std::vector<Json>& records) {
+  const ObjectSymmetry symmetry = symmetry_of(config.at("symmetry").at(name));
+  const Json& t = config.at("grasp_tolerance");
+  const GraspTolerance tolerance{t.at("position").as_number(), t.at("angle").as_number(),
+                                 t.at("joint").as_number()};
+  std::vector<Eigen::Isometry3d> poses;
+  std::vector<Eigen::VectorXd> joints;
+  std::vector<Json*> stable;
+  for (Json& rec : records) {
+    rec.set("cluster", Json());
+    if (rec.at("method").as_string() != "human" || !record_stable(rec)) continue;
+    stable.push_back(&rec);
+    poses.push_back(pose_of(rec.at("hand_pose")));
+    const Json::Array& q = rec.at("joints").as_array();
+    Eigen::VectorXd v(static_cast<Eigen::Index>(q.size()));
+    for (std::size_t i = 0; i < q.size(); ++i) v[static_cast<Eigen::Index>(i)] = q[i].as_number();
+    joints.push_back(std::move(v));
+  }
+  const std::vector<int> cluster =
+      grasp_clusters<Eigen::VectorXd>(poses, joints, symmetry, tolerance);
+  std::vector<std::pair<double, double>> id_cluster;  // (id, its cluster's id)
+  for (std::size_t i = 0; i < stable.size(); ++i) {
+    const double c = stable[static_cast<std::size_t>(cluster[i])]->at("id").as_number();
+    id_cluster.emplace_back(stable[i]->at("id").as_number(), c);
+  }
+  for (Json& rec : records)
+    for (const auto& [id, c] : id_cluster)
+      if (rec.at("id").as_number() == id) rec.set("cluster", c);
+}
+
+// The records that stand for their cluster: those whose cluster is their own id.
+inline std::vector<const Json*> representatives(const std::vector<const Json*>& records) {
+  std::vector<const Json*> out;
+  for (const Json* rec : records) {
+    const Json& c = rec->at("cluster");
+    if (c.is_number() && c.as_number() == rec->at("id").as_number()) out.push_back(rec);
+  }
+  return out;
+}
+
+// How many of \p records are stable, the rate and its Wilson interval, by the deciding engine
+// and by the second judge (null without one).
+inline Json rate_summary(const std::vector<const Json*>& records) {
+  const int n = static_cast<int>(records.size());
+  int first = 0, second = 0;
+  bool judged = false;
+  for (const Json* rec : records) {
+    first += record_stable(*rec) ? 1 : 0;
+    second += record_stable_second(*rec) ? 1 : 0;
+    judged = judged || !rec->at("second_judge").is_null();
+  }
+  Json j = Json::object();
+  j.set("tested", n);
+  j.set("stable", first);
+  j.set("rate", n > 0 ? first / static_cast<double>(n) : 0.0);
+  j.set("interval", json_interval(first, n));
+  j.set("stable_second", judged ? Json(second) : Json());
+  j.set("interval_second", judged ? json_interval(second, n) : Json());
+  return j;
+}
+
+}  // namespace detail
 
 /// One object's part of a results.json: how many hypotheses were run and their grasp records
 /// (hypothesis_records), in any order.
@@ -316,6 +479,7 @@ struct ObjectRecords {
               return detail::record_stable(*r);
             })));
     obj.set("human", detail::stability_summary(by[0]));
+    obj.set("distinct_human", static_cast<int>(detail::representatives(by[0]).size()));
     const bool second = std::any_of(by.begin() + 1, by.end(), [](const auto& records) {
       return std::any_of(records.begin(), records.end(),
                          [](const Json* r) { return !r->at("second_judge").is_null(); });
@@ -330,6 +494,15 @@ struct ObjectRecords {
       summary.set("paired_second", paired && second
                                        ? detail::paired_summary(by[m + 1], by[topological], true)
                                        : Json());
+      // The same on one demonstration per distinct grasp (its cluster's first).
+      const std::vector<const Json*> reps = detail::representatives(by[m + 1]);
+      summary.set("distinct", detail::rate_summary(reps));
+      const std::vector<const Json*> topo_reps =
+          paired ? detail::representatives(by[topological]) : std::vector<const Json*>{};
+      summary.set("paired_distinct",
+                  paired ? detail::paired_summary(reps, topo_reps, false) : Json());
+      summary.set("paired_distinct_second",
+                  paired && second ? detail::paired_summary(reps, topo_reps, true) : Json());
       ms.set(methods[m], summary);
     }
     obj.set("methods", ms);
@@ -355,6 +528,7 @@ struct ObjectRecords {
         detail::throw_invalid_argument("grasps", o.name + " " + id_text(o.grasps[i]) + " by " +
                                                      o.grasps[i].at("method").as_string() +
                                                      " is given twice");
+    detail::set_clusters(config, o.name, o.grasps);
     std::vector<std::vector<const Json*>> by(methods.size() + 1);
     for (const Json& rec : o.grasps) by[key(rec).first].push_back(&rec);
     for (std::size_t m = 0; m < by.size(); ++m)

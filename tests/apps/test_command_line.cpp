@@ -113,6 +113,26 @@ TEST_CASE("the flag --every-test runs the whole stability suite on every grasp",
   CHECK_THAT(error_of({"--every-test=1"}), Catch::StartsWith("--every-test=1: unknown option"));
 }
 
+TEST_CASE("the options --hypotheses and --closing choose the demonstrations' rule and closing",
+          "[io][command_line]") {
+  const CommandLine d = parse({});
+  CHECK(d.experiment.hypotheses == HypothesisRule::box);
+  CHECK_FALSE(d.experiment.transfer.sim.close.hold_object);
+  CHECK_FALSE(d.experiment.transfer.sim.palm_first);
+  CHECK(parse({"--hypotheses", "demonstrator"}).experiment.hypotheses ==
+        HypothesisRule::demonstrator);
+  const CommandLine held = parse({"--closing", "held"});
+  CHECK(held.experiment.transfer.sim.close.hold_object);
+  CHECK(held.experiment.transfer.sim.close.release_steps == 15);
+  CHECK(held.experiment.transfer.sim.palm_first);
+  CHECK_FALSE(parse({"--closing", "free"}).experiment.transfer.sim.close.hold_object);
+  CHECK_THAT(error_of({"--closing", "fixed"}),
+             Catch::StartsWith("--closing: expected free or held"));
+  CHECK_THAT(error_of({"--hypotheses", "many"}), Catch::StartsWith("--hypotheses: "));
+  CHECK_THAT(error_of({"--closing", "held", "--closing", "free"}),
+             Catch::StartsWith("--closing: given twice"));
+}
+
 TEST_CASE("the resume flag, and merge with the shards' folders", "[io][command_line]") {
   CHECK_FALSE(parse({}).resume);
   CHECK(parse({"--resume"}).resume);

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -121,4 +122,69 @@ TEST_CASE("a journal line that grasp_transfer did not write is refused naming th
                       Catch::StartsWith(at + problem) && Catch::Contains("without --resume"));
   }
   std::filesystem::remove(path);
+}
+
+TEST_CASE("results count distinct demonstrations: the same grasp up to symmetry is one",
+          "[io][results][clusters]") {
+  ExperimentOptions o;
+  o.objects = {objects::bottle()};
+  o.methods = {TransferMethod::topological, TransferMethod::transplant};
+  const Json config = results_config(o);
+  // Demonstrations 0 and 1 are one grasp turned 1 rad about the bottle's axis (z); 2 is another;
+  // 3 is not stable. Each method holds all of them but the transplant loses 1 and 2.
+  const Vec3 c = objects::bottle().centre_of_mass();
+  const auto pose = [&](double turn, double height) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.linear() = Mat3(Eigen::AngleAxisd(turn, Vec3::UnitZ()));
+    T.translation() = c + T.linear() * Vec3(-0.05, 0.0, height);
+    return T;
+  };
+  const auto record = [&](int id, const std::string& method, bool stable,
+                          const Eigen::Isometry3d& T) {
+    Json r = Json::object();
+    r.set("object", "bottle");
+    r.set("id", id);
+    r.set("method", method);
+    r.set("stable", stable);
+    r.set("tests", Json::array());
+    r.set("second_judge", Json());
+    if (method == "human") {
+      r.set("hand_pose", detail::json_pose(T));
+      r.set("joints", detail::json_vector(Vec<20>::Constant(0.4)));
+    }
+    return r;
+  };
+  std::vector<Json> records;
+  const std::array<Eigen::Isometry3d, 4> poses{pose(0.0, 0.0), pose(1.0, 0.0), pose(0.0, 0.05),
+                                               pose(0.0, 0.0)};
+  for (int id = 0; id < 4; ++id) {
+    records.push_back(record(id, "human", id < 3, poses[static_cast<std::size_t>(id)]));
+    if (id == 3) continue;
+    records.push_back(record(id, "topological", true, {}));
+    records.push_back(record(id, "transplant", id == 0, {}));
+  }
+  const Json doc = results_document(config, {ObjectRecords{"bottle", 4, records}});
+  std::vector<std::pair<int, Json>> clusters;
+  for (const Json& g : doc.at("grasps").as_array())
+    if (g.at("method").as_string() == "human")
+      clusters.emplace_back(static_cast<int>(g.at("id").as_number()), g.at("cluster"));
+  REQUIRE(clusters.size() == 4);
+  CHECK(clusters[0].second.as_number() == 0);
+  CHECK(clusters[1].second.as_number() == 0);
+  CHECK(clusters[2].second.as_number() == 2);
+  CHECK(clusters[3].second.is_null());  // not stable: in no cluster
+  const Json& bottle = doc.at("objects").as_array().front();
+  CHECK(bottle.at("stable_human").as_number() == 3);
+  CHECK(bottle.at("distinct_human").as_number() == 2);
+  const Json& transplant = bottle.at("methods").at("transplant");
+  CHECK(transplant.at("distinct").at("tested").as_number() == 2);
+  CHECK(transplant.at("distinct").at("stable").as_number() == 1);  // 0 held, 2 lost
+  CHECK(transplant.at("paired_distinct").at("only_against").as_number() == 1);
+  // A stable demonstration without its hand pose is refused.
+  records[0] = Json::object();
+  records[0].set("object", "bottle");
+  records[0].set("id", 0);
+  records[0].set("method", "human");
+  records[0].set("stable", true);
+  CHECK_THROWS(results_document(config, {ObjectRecords{"bottle", 4, records}}));
 }

@@ -78,6 +78,38 @@ TEST_CASE("closing each shipped hand on a cylinder stops every finger at contact
   }
 }
 
+TEST_CASE("held closing: the object stays still while the fingers close, free it is swept",
+          "[evaluation][close]") {
+  // The human hand and the thin cylinder of the test above: the curling fingers sweep it out
+  // when it is free; held, it does not move until it is released, and the record says so.
+  const Eigen::Isometry3d hand =
+      test::z_along(Eigen::Vector3d(1, 1, 0).normalized(), Eigen::Vector3d(0.1, -0.2, 0.5));
+  Vec<20> q = Vec<20>::Zero();
+  q[17] = 0.3;
+  const auto close = [&](bool held, int release_steps) {
+    HandScene<models::human_hand> scene(
+        hand, q,
+        cylinder_object(hand, {0.045, 0.0, 0.11}, Eigen::Vector3d::UnitY(), 0.02, 0.08, 0.3));
+    CloseOptions o;
+    o.hold_object = held;
+    o.release_steps = release_steps;
+    const auto r = close_hand(scene, o);
+    REQUIRE(r.status == Status::success);
+    CHECK_FALSE(scene.world().held(scene.object_body()));  // released in every case
+    return r;
+  };
+  const auto free = close(false, 0);
+  INFO("free: the object moved " << free.object_shift << " m");
+  CHECK(free.object_shift > 0.01);
+  const auto held = close(true, 0);
+  CHECK(held.object_shift == 0.0);
+  CHECK(held.object_turn == 0.0);
+  CHECK(held.contacts >= 2);  // the fingers closed on it
+  // Released for 0.25 s, the unbalanced fingers move it: the record measures that motion.
+  const auto released = close(true, 15);
+  CHECK(released.object_shift > 0.0);
+}
+
 TEST_CASE("the grip comes from the motors, not from the pads' stiffness", "[evaluation][close]") {
   // The SDH holding a bottle: the normal force scales with the motors' torque limit and hardly
   // depends on the finger pads' contact stiffness (which only sets how far they give).

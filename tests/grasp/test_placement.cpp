@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include <limits>
+
 #include <catch2/catch.hpp>
 
+#include <topograsp/grasp/hand_axes.hpp>
 #include <topograsp/grasp/object.hpp>
 #include <topograsp/grasp/placement.hpp>
 #include <topograsp/model/models.hpp>
@@ -52,4 +55,59 @@ TEST_CASE("approach until contact stops at the gap, and reports a miss", "[grasp
   CHECK((*touched - start).tail<10>().norm() == Approx(0.0).margin(1e-12));  // only z moved
   // Moving sideways, the hand passes the can: a miss.
   CHECK_FALSE(approach_until_contact<schunk_sdh_free>(start, Vec3::UnitX(), object).has_value());
+}
+
+TEST_CASE("the palm-first approach moves the palm in past the first contact, fingers opening",
+          "[grasp][placement]") {
+  using models::human_hand_free;
+  const GraspObject bottle = objects::bottle();
+  const Composite object = bottle.composite();
+  // The human hand 12 cm out on -x, its palm facing the bottle, fingers up, in the demonstrations'
+  // pre-shape (the thumb opposed, standing out of the palm) with the index bent.
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = palm_rotation(human_hand_axes, Vec3::UnitX(), Vec3::UnitZ());
+  T.translation() = Vec3(-0.152, 0.0, 0.085);
+  Vec<20> pre = Vec<20>::Zero();
+  pre[human_hand_free.joint("thumb_cmc2") - 6] = -deg(50.0);
+  pre[human_hand_free.joint("index_pip") - 6] = 0.6;
+  const int palm = human_hand_free.link("palm");
+  const Vec<26> start = place_frame<human_hand_free>(T, human_hand_free.frame("grasp_centre"), pre);
+  // The distance of the palm and of the nearest link to the bottle at q.
+  const auto distances = [&](const Vec<26>& q) {
+    KinematicsData<human_hand_free> d;
+    forward_kinematics(d, q);
+    double to_palm = std::numeric_limits<double>::infinity(), nearest = to_palm;
+    for (std::size_t i = 0; i < human_hand_free.n_shapes; ++i)
+      for (const Primitive& p : object.parts()) {
+        const double dist = signed_distance(world_shape(d, i), p).distance;
+        nearest = std::min(nearest, dist);
+        if (human_hand_free.shapes[i].link == palm) to_palm = std::min(to_palm, dist);
+      }
+    return std::pair{to_palm, nearest};
+  };
+  const auto first = approach_until_contact<human_hand_free>(start, Vec3::UnitX(), object, 0.002);
+  const auto placed =
+      approach_palm_first<human_hand_free>(start, Vec3::UnitX(), object, palm, 0.002);
+  REQUIRE(first);
+  REQUIRE(placed);
+  const auto [palm_first, nearest_first] = distances(*first);
+  const auto [palm_placed, nearest_placed] = distances(*placed);
+  INFO("palm " << palm_first << " m from the bottle at the first contact, " << palm_placed
+               << " m palm first");
+  // Nothing closer than the gap, something at it (the palm, or a link that cannot open more).
+  CHECK(nearest_first == Approx(0.002).margin(1e-4));
+  CHECK(nearest_placed >= 0.002 - 1e-9);
+  CHECK(nearest_placed <= 0.002 + 1e-4);
+  // The palm came in by more than 2 cm: the thumb standing out had stopped the first approach.
+  CHECK(palm_placed < palm_first - 0.02);
+  CHECK(palm_placed < 0.01);
+  // Only the closing joints moved, and only toward open.
+  const Vec<26> dir = closing_directions<human_hand_free>();
+  for (int i = 6; i < 26; ++i) {
+    if (dir[i] == 0.0) CHECK((*placed)[i] == start[i]);
+    CHECK(dir[i] * ((*placed)[i] - start[i]) <= 1e-12);
+  }
+  // Missing the object is reported.
+  CHECK_FALSE(
+      approach_palm_first<human_hand_free>(start, Vec3::UnitY(), object, palm, 0.002).has_value());
 }

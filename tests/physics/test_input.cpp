@@ -108,3 +108,29 @@ TEST_CASE("bad input to the world throws naming the argument", "[physics][input]
       },
       "pose");
 }
+
+TEST_CASE("a held body stays put under gravity and contact, and is itself again once released",
+          "[physics][held]") {
+  static const std::array<ShapeSpec, 1> cube{box("", Pose{}, {0.05, 0.05, 0.05})};
+  World<> w;
+  BodyDesc ground;
+  ground.type = BodyType::fixed;
+  ground.shapes = cube;
+  const int g = w.add_body(ground);
+  BodyDesc d;
+  d.shapes = cube;
+  d.mass = 2.0;
+  d.pose = at(0.0, 0.0, 0.5);
+  const int b = w.add_body(d);
+  w.set_velocity(b, {0.0, 0.0, -1.0}, {0.0, 0.0, 0.0});
+  w.set_held(b, true);
+  CHECK(w.held(b));
+  for (int k = 0; k < 30; ++k) REQUIRE(w.step() == Status::success);
+  CHECK(w.body(b).pose().translation().z() == 0.5);  // neither its velocity nor gravity moved it
+  w.set_held(b, false);
+  CHECK(w.body(b).inv_mass == 0.5);
+  for (int k = 0; k < 30; ++k) REQUIRE(w.step() == Status::success);
+  CHECK(w.body(b).pose().translation().z() < 0.5);  // released at rest, it falls
+  test::check_throws_naming([&] { w.set_held(g, true); }, "body");
+  test::check_throws_naming([&] { w.set_held(7, true); }, "body");
+}

@@ -37,10 +37,21 @@ struct CloseOptions {
   /// object or reach their limits; in [1, 1000000]. Default 60 (1 s at 60 Hz: a finger joint
   /// crosses 100 degrees at the SDH's 100 degrees/s).
   int closing_steps = 60;
+  /// Whether the object is held still while the motors close the fingers (World::set_held()) and
+  /// released after, as grasp-synthesis pipelines close on a static object (GraspIt's auto-grasp,
+  /// DexGraspNet's validation; docs/evaluation.md, "The closing protocol"). Unheld, an object that
+  /// only one finger reaches first is pushed away before the others arrive. Default false (the
+  /// protocol of the published results; grasp_transfer --closing held sets it).
+  bool hold_object = false;
+  /// Physics steps after the release, gravity still off and the motors still closing the fingers,
+  /// in which the object settles into the grasp (a grasp whose forces do not balance moves it here,
+  /// and CloseResult::object_shift says how far); in [0, 1000000]. Default 0 (--closing held: 15,
+  /// 0.25 s).
+  int release_steps = 0;
 };
 
 /// The numeric fields of CloseOptions with their valid ranges (close_hand() checks them).
-inline constexpr ParameterTable<CloseOptions, 5> close_parameters{{
+inline constexpr ParameterTable<CloseOptions, 6> close_parameters{{
     {"step", &CloseOptions::step, 0.0, unbounded, "rad or m: the search's joint increment", true},
     {"bisections", &CloseOptions::bisections, 0, 64, "bisections of each contact value"},
     {"touch_distance", &CloseOptions::touch_distance, 0.0, unbounded,
@@ -49,6 +60,8 @@ inline constexpr ParameterTable<CloseOptions, 5> close_parameters{{
      "the motors' fraction of their torque limits", true},
     {"closing_steps", &CloseOptions::closing_steps, 1, 1000000,
      "physics steps from first contact to the stall"},
+    {"release_steps", &CloseOptions::release_steps, 0, 1000000,
+     "physics steps after the object's release"},
 }};
 
 /// The most increments close_hand() takes per joint: CloseOptions::step must be at least the
@@ -64,7 +77,26 @@ struct CloseResult {
   std::array<bool, static_cast<std::size_t>(NQ)> touched{};  ///< joints stopped by contact
   int touching_joints = 0;                                   ///< how many joints touched
   int contacts = 0;  ///< hand-object contact points when closing ends
+  /// How far the object's centre of mass moved from the start of closing to its end (m),
+  /// release included.
+  double object_shift = 0.0;
+  /// How far the object turned over the same time (rad).
+  double object_turn = 0.0;
 };
+
+/// What a closing did, as a grasp's record keeps it (HumanGrasp, HandTransfer).
+struct ClosingRecord {
+  int touching_joints = 0;    ///< joints stopped by the object in the search for first contact
+  int contacts = 0;           ///< hand-object contact points when closing ended
+  double object_shift = 0.0;  ///< how far the object's centre of mass moved while closing (m)
+  double object_turn = 0.0;   ///< how far the object turned while closing (rad)
+};
+
+/// The record of closing \p c.
+template <int NQ>
+[[nodiscard]] ClosingRecord closing_record(const CloseResult<NQ>& c) noexcept {
+  return {c.touching_joints, c.contacts, c.object_shift, c.object_turn};
+}
 
 /// The targets a closed hand holds with: each joint with a closing direction at its closed
 /// limit (the upper for +1, the lower for -1), every other joint at its value in \p q.
@@ -115,8 +147,10 @@ std::array<bool, std::remove_cvref_t<decltype(M)>::n_links> links_after_joint(in
 /// the object (refined by bisection) or it reaches its limit. The hand is placed there; then
 /// every closing joint's motor is commanded to its closed limit and every other joint's to stay,
 /// all at options.hold_fraction of their torque limits, and the scene is stepped
-/// options.closing_steps times with gravity off: each finger closes until it stalls on the
-/// object, pressing with what its motor gives, or reaches its limit. The scene is left holding,
+/// options.closing_steps times with gravity off, the object held still (options.hold_object):
+/// each finger closes until it stalls on the object, pressing with what its motor gives, or
+/// reaches its limit. Then the object is released and the scene stepped options.release_steps
+/// times, gravity still off, the motors still closing the fingers. The scene is left holding,
 /// gravity restored: each closing joint's servo targets hold_targets() (it presses with
 /// hold_fraction of its limit where it stands, and resists a load stiffly up to its full limit);
 /// the moment closing ends, the reference of the stability tests. Works for any model whose joints
@@ -214,14 +248,21 @@ CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options
   result.q_contact = q;
   for (int i = 0; i < nq; ++i)
     if (result.touched[static_cast<std::size_t>(i)]) ++result.touching_joints;
-  // Close with the motors, gravity off.
+  // Close with the motors, gravity off, the object held still if asked.
   scene.place_hand(hand, result.q_contact);
   scene.set_effort_fraction(options.hold_fraction);
   scene.set_joint_targets(closed_targets<M>(q));
   World<S>& w = scene.world();
+  const Eigen::Isometry3d object_start = scene.object_pose();
+  const Vec3 com_start = scene.object_com();
   const Vec<3, S> gravity = w.gravity();
   w.set_gravity(Eigen::Vector3d::Zero());
+  if (options.hold_object) w.set_held(scene.object_body(), true);
   for (int k = 0; k < options.closing_steps && result.status == Status::success; ++k)
+    result.status = scene.step();
+  // Released, the object settles into the grasp, the motors still closing the fingers after it.
+  if (options.hold_object) w.set_held(scene.object_body(), false);
+  for (int k = 0; k < options.release_steps && result.status == Status::success; ++k)
     result.status = scene.step();
   w.set_gravity(gravity.template cast<double>());
   result.q_closed = scene.joint_positions();
@@ -229,6 +270,9 @@ CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options
   scene.set_joint_targets(hold_targets(scene, result.q_closed, options.hold_fraction));
   scene.set_effort_fraction(1.0);
   result.contacts = scene.hand_contacts();
+  result.object_shift = (scene.object_com() - com_start).norm();
+  result.object_turn =
+      Eigen::AngleAxisd(object_start.linear().transpose() * scene.object_pose().linear()).angle();
   return result;
 }
 

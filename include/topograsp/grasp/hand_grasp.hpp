@@ -186,6 +186,7 @@ struct HandTransfer {
   Eigen::Isometry3d hand_pose = Eigen::Isometry3d::Identity();  ///< the root link, object frame
   Vec<M.nq> q_open = Vec<M.nq>::Zero();                         ///< the joints before closing
   Vec<M.nq> q_closed = Vec<M.nq>::Zero();                       ///< when closing ended
+  ClosingRecord closing;  ///< what closing did (the object's motion, contacts)
   /// w of the hand's curves after closing, around the centre of mass (topological: around its
   /// winding reference).
   Vec<curves> winding = Vec<curves>::Zero();
@@ -323,6 +324,7 @@ void simulate_hand_grasp(const GraspObject& object, const Eigen::Isometry3d& roo
   r.hand_pose = root;
   r.q_open = q_open;
   r.q_closed = closed.q_closed;
+  r.closing = closing_record(closed);
   r.winding = hand_windings<M>(object.centre_of_mass(), root, closed.q_closed);
   r.object_pose = scene.object_pose();
   GraspJudgement judged = judge_grasp(scene, object, sim, second);

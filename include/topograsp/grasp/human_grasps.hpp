@@ -73,6 +73,12 @@ struct GraspSimOptions {
   bool second_judge_decides = false;
   double contact_gap = 0.002;  ///< how close the approach brings the hand to the object (m)
   double standoff = 0.12;      ///< where the approach starts, back from the face (m)
+  /// How the human hand approaches a hypothesis: true, palm first (approach_palm_first(): the
+  /// palm moves in until it meets the object, the fingers opening where they would enter it, as
+  /// a person grasping an object brings the palm to it); false (the default, the protocol of the
+  /// published results), until any link first touches (approach_until_contact(), usually the
+  /// opposed thumb).
+  bool palm_first = false;
 };
 
 /// The open pre-shape of the human hand the demonstrations start from, a power-grasp pre-shape:
@@ -107,7 +113,7 @@ struct HumanGrasp {
   bool reached = false;  ///< the approach touched the object (else nothing was simulated)
   Eigen::Isometry3d hand_pose = Eigen::Isometry3d::Identity();  ///< the palm (root link) pose
   Vec<20> q = Vec<20>::Zero();                                  ///< joints when closing ended
-  int touching_joints = 0;                ///< joints stopped by the object while closing
+  ClosingRecord closing;                  ///< what closing did (the object's motion, contacts)
   StabilityResult stability;              ///< the deciding judge's verdict and records
   std::optional<StabilityResult> second;  ///< the other judge's, if there is one
   QualityRecord quality;                  ///< Ferrari-Canny epsilon when closing ended
@@ -225,7 +231,7 @@ void judge_human_closing(const GraspObject& object, const HumanClosing& closed,
   g.reached = true;
   g.hand_pose = scene.hand_pose();
   g.q = closed.closing.q_closed;
-  g.touching_joints = closed.closing.touching_joints;
+  g.closing = closing_record(closed.closing);
   g.object_pose = scene.object_pose();
   GraspJudgement judged = judge_grasp(scene, object, options, options.second_judge_human);
   g.stability = std::move(judged.stability);
@@ -258,8 +264,13 @@ template <class = void>
   T.translation() = h.centre - options.standoff * h.approach;
   const Vec<26> start =
       place_frame<models::human_hand_free>(T, models::human_hand_free.frame("grasp_centre"), pre);
-  const auto touched = approach_until_contact<models::human_hand_free>(
-      start, h.approach, shape, options.contact_gap, 2.0 * options.standoff);
+  constexpr auto& free = models::human_hand_free;
+  const auto touched =
+      options.palm_first
+          ? approach_palm_first<free>(start, h.approach, shape, free.link("palm"),
+                                      options.contact_gap, 2.0 * options.standoff)
+          : approach_until_contact<free>(start, h.approach, shape, options.contact_gap,
+                                         2.0 * options.standoff);
   if (!touched) return std::nullopt;
   return detail::close_human_at(object, *touched, options);
 }

@@ -5,13 +5,16 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <type_traits>
 
 #include <topograsp/geometry/composite.hpp>
 #include <topograsp/geometry/model_shapes.hpp>
 #include <topograsp/geometry/signed_distance.hpp>
+#include <topograsp/kinematics/data.hpp>
 #include <topograsp/kinematics/forward.hpp>
 
 namespace topograsp {
@@ -75,6 +78,82 @@ template <const auto& M>
     const double step = dist - gap;
     if (travelled + step > max_travel) return std::nullopt;
     q.template head<3>() += step * u;
+    travelled += step;
+  }
+  return q;
+}
+
+/// The approach a human demonstrator makes with the free-base hand \p M: from configuration \p q
+/// the base moves along the world direction \p direction until link \p palm (the palm) is \p gap
+/// from \p object, the fingers opening on the way wherever they would come closer than gap (each
+/// closing joint that carries such a link moved back toward its open limit by \p open_step at a
+/// time, LinkSpec::closing). Where the fingers can open no further the hand stops short of the
+/// palm's contact, a link that cannot open within 0.1 mm of gap. First the whole hand moves in
+/// until it is gap away (approach_until_contact()); then the palm advances by at most 5 mm at a
+/// time, in halved steps where it is blocked. Returns the
+/// configuration, or nothing if the hand misses the object within \p max_travel or starts
+/// closer than gap.
+template <const auto& M>
+[[nodiscard]] std::optional<Vec<M.nq>> approach_palm_first(Vec<M.nq> q, const Vec3& direction,
+                                                           const Composite& object, int palm,
+                                                           double gap = 0.001,
+                                                           double max_travel = 0.5,
+                                                           double open_step = 0.02) {
+  const auto first = approach_until_contact<M>(q, direction, object, gap, max_travel);
+  if (!first) return std::nullopt;
+  q = *first;
+  const Vec3 u = direction.normalized();
+  const Vec<M.nq> lo = lower_limits<M>(), hi = upper_limits<M>(), dir = closing_directions<M>();
+  KinematicsData<M> d;
+  // The distance of each link to the object (+infinity for a link without shapes).
+  std::array<double, std::remove_cvref_t<decltype(M)>::n_links> link_distance{};
+  const auto distances = [&](const Vec<M.nq>& c) {
+    forward_kinematics(d, c);
+    link_distance.fill(std::numeric_limits<double>::infinity());
+    for (std::size_t i = 0; i < M.n_shapes; ++i) {
+      const Primitive s = world_shape(d, i);
+      double& best = link_distance[static_cast<std::size_t>(M.shapes[i].link)];
+      for (const Primitive& part : object.parts())
+        best = std::min(best, signed_distance(s, part).distance);
+    }
+  };
+  // Opens the joints that carry the links of c closer than gap (other than the palm) until none
+  // is; false if one is at its open limits and still too close.
+  const auto open_fingers = [&](Vec<M.nq>& c) {
+    for (int round = 0; round < 1000; ++round) {
+      distances(c);
+      bool clear = true, opened = false;
+      for (std::size_t l = 0; l < link_distance.size(); ++l) {
+        if (static_cast<int>(l) == palm || link_distance[l] >= gap) continue;
+        clear = false;
+        for (const SupportJoint& j : M.support(static_cast<int>(l))) {
+          if (dir[j.q] == 0.0) continue;
+          const double open = std::clamp(c[j.q] - dir[j.q] * open_step, lo[j.q], hi[j.q]);
+          opened = opened || open != c[j.q];
+          c[j.q] = open;
+        }
+      }
+      if (clear) return true;
+      if (!opened) return false;
+    }
+    return false;
+  };
+  double travelled = 0.0, max_step = 0.005;
+  for (int iteration = 0; iteration < 1000; ++iteration) {
+    distances(q);
+    const double to_palm = link_distance[static_cast<std::size_t>(palm)] - gap;
+    if (to_palm < 1e-5) return q;
+    const double step = std::min(to_palm, max_step);
+    if (travelled + step > max_travel) return q;
+    Vec<M.nq> trial = q;
+    trial.template head<3>() += step * u;
+    if (!open_fingers(trial)) {
+      // Blocked: go on in halved steps, down to 0.1 mm.
+      max_step *= 0.5;
+      if (max_step < 1e-4) return q;
+      continue;
+    }
+    q = trial;
     travelled += step;
   }
   return q;

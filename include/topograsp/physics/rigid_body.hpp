@@ -70,6 +70,8 @@ struct BodyState {
   Vec<3, S> v = Vec<3, S>::Zero();                  ///< linear velocity of x (m/s)
   Vec<3, S> w = Vec<3, S>::Zero();                  ///< angular velocity, world (rad/s)
   Mat<3, 3, S> inv_inertia = Mat<3, 3, S>::Zero();  ///< inverse inertia in world axes
+  /// A dynamic body held still (World::set_held()): at rest, its inverse mass and inertia 0.
+  bool held = false;
 };
 
 /// One body of a World: its constants and its state. The position x is the centre of mass; the

@@ -217,6 +217,28 @@ class World {
     b.w = w.template cast<S>();
   }
 
+  /// Holds dynamic body \p body still (\p held true), as a fixture holds an object while a hand
+  /// closes on it: it stays where it is, at rest, and keeps its contacts, but with an infinite
+  /// mass and inertia, so that nothing moves it and whatever presses on it stalls there. False
+  /// releases it, at rest, with its own mass and inertia again. Throws
+  /// topograsp::invalid_argument for a bad index or a body that is not dynamic.
+  void set_held(int body, bool held) {
+    detail::require_index(body, bodies_.size(), "body", "body");
+    RigidBody<S>& b = bodies_[static_cast<std::size_t>(body)];
+    if (b.type != BodyType::dynamic)
+      detail::throw_invalid_argument("body", "expected a dynamic body");
+    b.held = held;
+    b.v.setZero();
+    b.w.setZero();
+    b.inv_mass = held ? S(0) : S(1) / b.mass;
+    b.inv_inertia_local = held ? M3::Zero() : M3(detail::inverse_in_range<S>(b.inertia));
+    b.update_world_inertia();
+  }
+  /// True while body \p body is held (set_held()).
+  [[nodiscard]] bool held(int body) const noexcept {
+    return bodies_[static_cast<std::size_t>(body)].held;
+  }
+
   /// Adds a joint-space actuator (see ActuatorDesc) and returns its index. Allocates. Throws
   /// topograsp::invalid_argument naming the field ("desc.inertia", ...) for a non-finite value,
   /// lower above upper, a position outside [lower, upper], or an inertia, max_effort,

@@ -120,7 +120,7 @@ void kinematic_substep(const StepContext<S>& ctx, std::span<const KinematicTarge
 template <class S>
 void integrate_velocities(const StepContext<S>& ctx) noexcept {
   for (RigidBody<S>& b : ctx.bodies) {
-    if (b.type != BodyType::dynamic) continue;
+    if (b.type != BodyType::dynamic || b.held) continue;
     b.v = ctx.linear_damping * (b.v + ctx.h * ctx.gravity);
     b.w *= ctx.angular_damping;
   }
