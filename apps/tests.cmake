@@ -102,6 +102,15 @@ add_test(NAME "app: transfer_matrix (small run)"
                  --out ${CMAKE_CURRENT_BINARY_DIR}/transfer_matrix_small)
 set_tests_properties("app: transfer_matrix (small run)" PROPERTIES
                      PASS_REGULAR_EXPRESSION "human -> Shadow \\| bottle \\| virtual_finger \\| 1 \\|")
+# Past a file-size limit the same run fails with a message and leaves that run's files as they
+# were (its outputs are staged and committed as one).
+add_test(NAME "app: transfer_matrix fails whole past a file-size limit"
+         COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:transfer_matrix>
+                 -DSOURCE=${CMAKE_CURRENT_BINARY_DIR}/transfer_matrix_small
+                 -DDIR=${CMAKE_CURRENT_BINARY_DIR}/transfer_matrix_file_limit
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/grasp_transfer/matrix/file_limit.cmake)
+set_tests_properties("app: transfer_matrix fails whole past a file-size limit" PROPERTIES
+                     DEPENDS "app: transfer_matrix (small run)" LABELS end_to_end)
 # The sanitizer build does not build transfer_matrix (apps/CMakeLists.txt): its refusals are
 # checked in the Release build with its end-to-end run.
 expect_rejected(transfer_matrix end_to_end "unknown object|--objects anvil|--objects: unknown object \"anvil\""
