@@ -49,7 +49,6 @@ struct RecordedGrasp {
   KeypointGrasp grasp;
 };
 
-/// What to run.
 /// Which rule makes the grasp hypotheses of the planned demonstrations.
 enum class HypothesisRule : std::uint8_t {
   box,           ///< box_hypotheses(): BADGr's, 4 per reachable box face
@@ -59,6 +58,7 @@ enum class HypothesisRule : std::uint8_t {
   return r == HypothesisRule::demonstrator ? "demonstrator" : "box";
 }
 
+/// What to run.
 struct ExperimentOptions {
   std::vector<GraspObject> objects;     ///< default: the paper's hammer and bottle
   std::vector<TransferMethod> methods;  ///< default: all three
