@@ -20,7 +20,7 @@ namespace topograsp {
 struct GraspHypothesis {
   int box = 0;                    ///< index into GraspObject::boxes
   int face = 0;                   ///< 0..5: the box's +x, -x, +y, -y, +z, -z face
-  int turn = 0;                   ///< 0..3: the hand turned by turn * 90 degrees about the approach
+  int turn = 0;                   ///< 0..3: turned turn * 90 degrees about the approach; -1: roll
   Vec3 centre = Vec3::Zero();     ///< the centre of the face (m)
   Vec3 approach = Vec3::UnitX();  ///< unit: the direction the hand moves, into the face
   Vec3 up = Vec3::UnitZ();        ///< unit, orthogonal to approach: where the fingers point
