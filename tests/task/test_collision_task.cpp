@@ -50,10 +50,13 @@ void check_collision_jacobian(std::uint32_t seed) {
         std::uniform_int_distribution<std::size_t>(0, M.shapes.size() - 1)(rng);
     INFO(M.name.view() << " trial " << trial << " near shape " << shape);
     // Spheres, capsules and boxes: exact against the human hand; the other hands have
-    // cylinders, whose penetration EPA approaches iteratively (signed_distance()).
+    // cylinders, whose penetration EPA approaches iteratively (signed_distance()): it stops when
+    // its bounds on the depth are 1e-10 (1 + depth) m apart, which the central differences over
+    // 2e-6 rad turn into noise of about 1e-4 of the potential's slope (2.7e-4 measured on a
+    // Barrett trial in the clang -O1 sanitizer build).
     const bool exact_hand = M.name.view() == "human_hand";
     const CollisionTask<M> blocks(test::blocks(near_shape(d, shape, rng, &test::blocks)), 0.02);
-    CHECK(test::jacobian_error(blocks, q) < (exact_hand ? 1e-6 : 1e-4));
+    CHECK(test::jacobian_error(blocks, q) < (exact_hand ? 1e-6 : 1e-3));
     // The bottle and the hammer bring cylinders of their own.
     const CollisionTask<M> bottle(test::bottle(near_shape(d, shape, rng, &test::bottle)), 0.02);
     const CollisionTask<M> hammer(test::hammer(near_shape(d, shape, rng, &test::hammer)), 0.02);

@@ -58,7 +58,7 @@ namespace detail {
 ///   budget of 1024 vertices first (two cylinders rim to rim, sizes 1 mm to 2 m: at most 2.7e-5 of
 ///   the depth in 800 random overlapping pairs) L is reported, short of the depth by at most
 ///   U - L. The witness points are good to about 1e-5 m, so the distance gradient built from them
-///   is accurate to about 1e-4 relative there.
+///   is accurate to about 1e-4 to 1e-3 relative there.
 /// If EPA meets a degenerate polytope from GJK's final simplex it is seeded again from support
 /// points along a tetrahedron's corners (and the opposite one); if neither holds the origin the
 /// cores only graze, and the answer is the touching contact (cores at distance 0) between the
