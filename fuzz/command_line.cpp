@@ -48,6 +48,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         start = end + 1;
       }
     }
+    // A YCB object named in --objects is loaded and its mesh decomposed into boxes while the
+    // line is parsed (seconds each under the sanitizers): the fuzzer would time out on a list of
+    // them. The mesh readers have fuzzers of their own (mesh_file); the parser's handling of
+    // object names is fuzzed with the built-in objects.
+    for (const std::string_view a : args)
+      if (a.find("ycb_") != std::string_view::npos) return;
     const std::string input = describe(args);
     topograsp::CommandLine cli;
     try {
