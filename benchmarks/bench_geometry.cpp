@@ -10,23 +10,16 @@
 
 #include <topograsp/geometry.hpp>
 
+#include "support/random.hpp"
+
 using namespace topograsp;
 
 namespace {
 
-// A random pose within spread of the origin and a random rotation.
-Eigen::Isometry3d random_pose(std::mt19937& rng, double spread) {
-  std::uniform_real_distribution<double> u(-spread, spread), a(-1.0, 1.0);
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.linear() = Eigen::Quaterniond(a(rng), a(rng), a(rng), a(rng)).normalized().toRotationMatrix();
-  T.translation() = Vec3(u(rng), u(rng), u(rng));
-  return T;
-}
-
 // A random shape of `type`, sizes 2 to 10 cm.
 Primitive random_shape(std::mt19937& rng, ShapeType type, double spread) {
   std::uniform_real_distribution<double> s(0.02, 0.1);
-  const Eigen::Isometry3d T = random_pose(rng, spread);
+  const Eigen::Isometry3d T = test::random_pose(rng, spread);
   if (type == ShapeType::capsule) {
     const Vec3 h = T.linear().col(2) * s(rng);
     return Primitive::capsule(T.translation() - h, T.translation() + h, 0.5 * s(rng));

@@ -10,22 +10,15 @@
 
 #include <topograsp/geometry.hpp>
 
+#include "support/random.hpp"
+
 using namespace topograsp;
 
 namespace {
 
-Eigen::Isometry3d random_pose(std::mt19937& rng, double spread) {
-  std::uniform_real_distribution<double> u(-spread, spread);
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  std::uniform_real_distribution<double> a(-1.0, 1.0);
-  T.linear() = Eigen::Quaterniond(a(rng), a(rng), a(rng), a(rng)).normalized().toRotationMatrix();
-  T.translation() = Vec3(u(rng), u(rng), u(rng));
-  return T;
-}
-
 Primitive random_primitive(std::mt19937& rng, ShapeType type, double spread) {
   std::uniform_real_distribution<double> s(0.02, 0.1);
-  const Eigen::Isometry3d T = random_pose(rng, spread);
+  const Eigen::Isometry3d T = test::random_pose(rng, spread);
   switch (type) {
     case ShapeType::sphere:
       return Primitive::sphere(T.translation(), s(rng));

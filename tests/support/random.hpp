@@ -28,4 +28,15 @@ Vec<M.nq> random_configuration(Rng& rng, double prismatic_range = 0.3) {
   return q;
 }
 
+/// A pose within \p spread (m) of the origin along each axis, its rotation from a uniformly drawn
+/// quaternion: four draws in [-1, 1] for the rotation, then three in [-spread, spread].
+template <class Rng>
+Eigen::Isometry3d random_pose(Rng& rng, double spread) {
+  std::uniform_real_distribution<double> u(-spread, spread), a(-1.0, 1.0);
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = Eigen::Quaterniond(a(rng), a(rng), a(rng), a(rng)).normalized().toRotationMatrix();
+  T.translation() = Vec3(u(rng), u(rng), u(rng));
+  return T;
+}
+
 }  // namespace topograsp::test
