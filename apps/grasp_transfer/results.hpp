@@ -379,10 +379,8 @@ inline void set_clusters(const Json& config, const std::string& name, std::vecto
     if (rec.at("method").as_string() != "human" || !record_stable(rec)) continue;
     stable.push_back(&rec);
     poses.push_back(pose_of(rec.at("hand_pose")));
-    const Json::Array& q = rec.at("joints").as_array();
-    Eigen::VectorXd v(static_cast<Eigen::Index>(q.size()));
-    for (std::size_t i = 0; i < q.size(); ++i) v[static_cast<Eigen::Index>(i)] = q[i].as_number();
-    joints.push_back(std::move(v));
+    const Json& q = rec.at("joints");
+    joints.push_back(numbers(q, static_cast<int>(q.as_array().size()), "joints"));
   }
   const std::vector<int> cluster =
       grasp_clusters<Eigen::VectorXd>(poses, joints, symmetry, tolerance);
