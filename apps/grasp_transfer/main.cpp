@@ -102,6 +102,17 @@ void print_table(const Json& doc) {
   });
   row("  distinct (up to symmetry)",
       [&](const Json& o) { return "- | " + o.at("distinct_human").dump(0); });
+  if (second)
+    row("  stable in both engines (distinct)", [&](const Json& o) {
+      const Json& d = o.at("demonstrations");
+      return "- | " + d.at("stable_both").dump(0) + " (" + d.at("distinct_both").dump(0) + ")";
+    });
+  row("  object's median motion while closing", [&](const Json& o) {
+    const Json& m = o.at("demonstrations").at("median_object_shift");
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.1f mm", m.is_null() ? 0.0 : 1000.0 * m.as_number());
+    return "- | " + (m.is_null() ? std::string("-") : std::string(buf));
+  });
   for (const std::string& m : methods) {
     const int paper_row = m == "transplant" ? 2 : m == "topological" || m == "paper" ? 3 : -1;
     row(label(m), [&](const Json& o) {

@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <grasp_transfer/experiment.hpp>
@@ -425,6 +427,65 @@ inline Json rate_summary(const std::vector<const Json*>& records) {
   return j;
 }
 
+// The demonstrations of one object (\p human: its human records, one per hypothesis that reached
+// the object) as docs/evaluation.md counts them: how many reached it and how many touch it when
+// closing ends; stable by the deciding engine, by the second judge (null without one) and by
+// both; distinct grasps among the stable ones (clusters) and among those both engines hold (the
+// clusters with a member both hold); the object's median shift and turn while the hand closed;
+// and the engines' agreement and Cohen's kappa over the demonstrations that touch the object (the
+// grasps both reject without a contact say nothing about the engines; null without a second
+// judge, kappa null where undefined).
+inline Json demonstration_summary(int hypotheses, const std::vector<const Json*>& human) {
+  int touching = 0, first = 0, both = 0;
+  bool judged = false;
+  std::vector<double> shift, turn;
+  std::vector<std::pair<std::string, double>> clusters_both;  // (object, cluster): pooled objects
+  std::vector<bool> first_touching, second_touching;
+  for (const Json* rec : human) {
+    const bool a = record_stable(*rec), b = record_stable_second(*rec);
+    judged = judged || !rec->at("second_judge").is_null();
+    first += a ? 1 : 0;
+    both += a && b ? 1 : 0;
+    if (a && b)
+      clusters_both.emplace_back(rec->at("object").as_string(), rec->at("cluster").as_number());
+    const Json& c = rec->at("closing");
+    if (c.is_null()) continue;
+    shift.push_back(c.at("object_shift").as_number());
+    turn.push_back(c.at("object_turn").as_number());
+    if (!(c.at("contacts").as_number() > 0)) continue;
+    ++touching;
+    first_touching.push_back(a);
+    second_touching.push_back(b);
+  }
+  std::sort(clusters_both.begin(), clusters_both.end());
+  const auto distinct_both = std::unique(clusters_both.begin(), clusters_both.end());
+  Json j = Json::object();
+  j.set("hypotheses", hypotheses);
+  j.set("reached", static_cast<int>(human.size()));
+  j.set("touching", touching);
+  j.set("stable", first);
+  j.set("stable_second", judged ? Json(static_cast<int>(std::count_if(
+                                      human.begin(), human.end(),
+                                      [](const Json* r) { return record_stable_second(*r); })))
+                                : Json());
+  j.set("stable_both", judged ? Json(both) : Json());
+  j.set("distinct", static_cast<int>(representatives(human).size()));
+  j.set("distinct_both",
+        judged ? Json(static_cast<int>(distinct_both - clusters_both.begin())) : Json());
+  j.set("median_object_shift", json_median(shift));
+  j.set("median_object_turn", json_median(turn));
+  if (judged && touching > 0) {
+    const PairedComparison c = compare_paired(first_touching, second_touching);
+    const double kappa = cohen_kappa(c);
+    j.set("agreement_touching", (c.both + c.neither) / static_cast<double>(touching));
+    j.set("kappa_touching", std::isnan(kappa) ? Json() : Json(kappa));
+  } else {
+    j.set("agreement_touching", Json());
+    j.set("kappa_touching", Json());
+  }
+  return j;
+}
+
 }  // namespace detail
 
 /// One object's part of a results.json: how many hypotheses were run and their grasp records
@@ -478,6 +539,8 @@ struct ObjectRecords {
             })));
     obj.set("human", detail::stability_summary(by[0]));
     obj.set("distinct_human", static_cast<int>(detail::representatives(by[0]).size()));
+    obj.set("demonstrations", detail::demonstration_summary(
+                                  static_cast<int>(obj.at("hypotheses").as_number()), by[0]));
     const bool second = std::any_of(by.begin() + 1, by.end(), [](const auto& records) {
       return std::any_of(records.begin(), records.end(),
                          [](const Json* r) { return !r->at("second_judge").is_null(); });

@@ -151,6 +151,13 @@ TEST_CASE("results count distinct demonstrations: the same grasp up to symmetry 
     if (method == "human") {
       r.set("hand_pose", detail::json_pose(T));
       r.set("joints", detail::json_vector(Vec<20>::Constant(0.4)));
+      Json closing = Json::object();  // the object moved id cm while the hand closed
+      closing.set("object_shift", 0.01 * id);
+      closing.set("object_turn", 0.1 * id);
+      closing.set("contacts", 5);
+      closing.set("touching_joints", 4);
+      r.set("closing", closing);
+      r.set("collider_error", 0.0);
     }
     return r;
   };
@@ -180,6 +187,43 @@ TEST_CASE("results count distinct demonstrations: the same grasp up to symmetry 
   CHECK(transplant.at("distinct").at("tested").as_number() == 2);
   CHECK(transplant.at("distinct").at("stable").as_number() == 1);  // 0 held, 2 lost
   CHECK(transplant.at("paired_distinct").at("only_against").as_number() == 1);
+  // The demonstrations' own summary; without a second judge its counts are null.
+  const Json& demos = bottle.at("demonstrations");
+  CHECK(demos.at("hypotheses").as_number() == 4);
+  CHECK(demos.at("reached").as_number() == 4);
+  CHECK(demos.at("touching").as_number() == 4);
+  CHECK(demos.at("stable").as_number() == 3);
+  CHECK(demos.at("distinct").as_number() == 2);
+  CHECK(demos.at("stable_second").is_null());
+  CHECK(demos.at("stable_both").is_null());
+  CHECK(demos.at("kappa_touching").is_null());
+  CHECK(demos.at("median_object_shift").as_number() == Approx(0.015));
+  CHECK(demos.at("median_object_turn").as_number() == Approx(0.15));
+  {
+    // MuJoCo holds demonstrations 0 and 2, drops 1 (a member of 0's cluster) and 3: stable in
+    // both 2, in 2 distinct grasps; agreement 3 of 4, kappa (0.75 - 0.5) / (1 - 0.5).
+    std::vector<Json> judged = records;
+    for (Json& r : judged) {
+      if (r.at("method").as_string() != "human") continue;
+      const int id = static_cast<int>(r.at("id").as_number());
+      Json j = Json::object();
+      j.set("engine", "mujoco");
+      j.set("stable", id == 0 || id == 2);
+      j.set("reason", "");
+      j.set("collider_error", 0.0);
+      j.set("tests", Json::array());
+      r.set("second_judge", j);
+    }
+    const Json both = results_document(config, {ObjectRecords{"bottle", 5, judged}});
+    const Json& d = both.at("objects").as_array().front().at("demonstrations");
+    CHECK(d.at("hypotheses").as_number() == 5);
+    CHECK(d.at("stable_second").as_number() == 2);
+    CHECK(d.at("stable_both").as_number() == 2);
+    CHECK(d.at("distinct_both").as_number() == 2);
+    CHECK(d.at("agreement_touching").as_number() == Approx(0.75));
+    CHECK(d.at("kappa_touching").as_number() == Approx(0.5));
+    CHECK(both.at("overall").at("demonstrations").at("distinct_both").as_number() == 2);
+  }
   // A stable demonstration without its hand pose is refused.
   records[0] = Json::object();
   records[0].set("object", "bottle");

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The Wilson interval against Newcombe's published examples, McNemar's exact test against exact
-// binomial sums, and what both do with bad input; the median.
+// binomial sums, and what both do with bad input; Cohen's kappa; the median.
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -80,6 +80,21 @@ TEST_CASE("a paired comparison counts the four kinds of pair", "[evaluation][sta
   CHECK(c.p_value == Approx(mcnemar_exact_p(7, 1)));
   CHECK(c.p_value == Approx(2.0 * 9.0 / 256.0));
   CHECK_THROWS_WITH(compare_paired(a, {true}), Catch::Contains("as many outcomes"));
+}
+
+TEST_CASE("Cohen's kappa is agreement beyond chance", "[evaluation][statistics]") {
+  // The textbook case: 50 items, 20 yes-yes, 5 yes-no, 10 no-yes, 15 no-no: observed agreement
+  // 0.7, chance 0.5 (first judge 25 yes, second 30), kappa 0.4.
+  CHECK(cohen_kappa({20, 5, 10, 15, 1.0}) == Approx(0.4));
+  CHECK(cohen_kappa({12, 0, 0, 30, 1.0}) == Approx(1.0));  // perfect agreement
+  // Independent judges (a product table): 0; always disagreeing: negative.
+  CHECK(cohen_kappa({6, 14, 9, 21, 1.0}) == Approx(0.0).margin(1e-12));
+  CHECK(cohen_kappa({0, 10, 10, 0, 1.0}) == Approx(-1.0));
+  // Undefined: no grasps, or both judges giving every grasp the same verdict.
+  CHECK(std::isnan(cohen_kappa({})));
+  CHECK(std::isnan(cohen_kappa({7, 0, 0, 0, 1.0})));
+  // One judge constant, the other not: chance agreement equals observed, kappa 0.
+  CHECK(cohen_kappa({3, 0, 5, 0, 1.0}) == Approx(0.0).margin(1e-12));
 }
 
 TEST_CASE("the median is the middle value, or the mean of the two middle ones",

@@ -2,7 +2,7 @@
 /// \file
 /// The statistics of a success rate and of a paired comparison, as Table I reports them: the
 /// Wilson score interval of a rate, and McNemar's exact test of two methods judged on the same
-/// grasps; and the median of a sample. See docs/evaluation.md.
+/// grasps; Cohen's kappa of two judges; and the median of a sample. See docs/evaluation.md.
 #pragma once
 
 #include <algorithm>
@@ -110,6 +110,22 @@ struct PairedComparison {
   }
   c.p_value = mcnemar_exact_p(c.only_first, c.only_second);
   return c;
+}
+
+/// Cohen's kappa of two judges' verdicts on the same grasps (\p c: both, only_first, only_second,
+/// neither): how far their agreement p_o = (both + neither) / n exceeds the agreement p_e that two
+/// judges with the same stable rates would reach by chance, as a fraction of what could exceed
+/// it: (p_o - p_e) / (1 - p_e). 1 is perfect agreement, 0 no better than chance, negative worse.
+/// NaN where it is undefined: no grasps, or both judges giving every grasp one and the same
+/// verdict (p_e = 1).
+[[nodiscard]] inline double cohen_kappa(const PairedComparison& c) noexcept {
+  const double n = static_cast<double>(c.both) + c.only_first + c.only_second + c.neither;
+  if (!(n > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  const double first = (c.both + c.only_first) / n, second = (c.both + c.only_second) / n;
+  const double observed = (c.both + c.neither) / n;
+  const double chance = first * second + (1.0 - first) * (1.0 - second);
+  if (!(chance < 1.0)) return std::numeric_limits<double>::quiet_NaN();
+  return (observed - chance) / (1.0 - chance);
 }
 
 }  // namespace topograsp
