@@ -149,7 +149,8 @@ inline ObjectSymmetry symmetry_of(const Json& j) {
 }
 
 // What closing did, for a grasp record (null when nothing was simulated): the object's motion
-// while the hand closed, released and settled (m, rad), and the contacts when closing ended.
+// while the hand closed, released and settled (m, rad), and the contacts when closing ended
+// (their count, and each point: its link, point and normal in the object's frame, force).
 inline Json json_closing(const ClosingRecord* c) {
   if (c == nullptr) return Json();
   Json j = Json::object();
@@ -157,6 +158,16 @@ inline Json json_closing(const ClosingRecord* c) {
   j.set("object_turn", c->object_turn);
   j.set("contacts", c->contacts);
   j.set("touching_joints", c->touching_joints);
+  Json points = Json::array();
+  for (const HandContact& p : c->contact_points) {
+    Json q = Json::object();
+    q.set("link", p.link);
+    q.set("point", json_vector(p.point));
+    q.set("normal", json_vector(p.normal));
+    q.set("force", p.force);
+    points.push_back(q);
+  }
+  j.set("contact_points", points);
   return j;
 }
 

@@ -213,6 +213,20 @@ TEST_CASE("a small experiment: counts, schema and determinism", "[grasp][experim
         CHECK(g.at("closing_penetration").as_number() >= 0.0);
       }
       if (g.at("stable").as_bool()) CHECK(g.at("reason").as_string().empty());
+      // What closing did: as many contact points as it counts, each on a named link, its
+      // normal a unit vector, its force not negative.
+      const Json& closing = g.at("closing");
+      if (closing.is_null()) continue;
+      const auto& points = closing.at("contact_points").as_array();
+      CHECK(static_cast<double>(points.size()) == closing.at("contacts").as_number());
+      for (const Json& p : points) {
+        CHECK_FALSE(p.at("link").as_string().empty());
+        CHECK(p.at("point").as_array().size() == 3);
+        const auto& n = p.at("normal").as_array();
+        REQUIRE(n.size() == 3);
+        CHECK(std::hypot(n[0].as_number(), n[1].as_number(), n[2].as_number()) == Approx(1.0));
+        CHECK(p.at("force").as_number() >= 0.0);
+      }
     }
   }
 

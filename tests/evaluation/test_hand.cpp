@@ -105,6 +105,20 @@ TEST_CASE("held closing: the object stays still while the fingers close, free it
   CHECK(held.object_shift == 0.0);
   CHECK(held.object_turn == 0.0);
   CHECK(held.contacts >= 2);  // the fingers closed on it
+  // Each contact point when closing ended: on a finger link (the palm is not near the cylinder),
+  // a unit normal, pressing.
+  REQUIRE(static_cast<int>(held.contact_points.size()) == held.contacts);
+  double force = 0.0;
+  for (const HandContact& c : held.contact_points) {
+    INFO(c.link << " at " << c.point.transpose() << ", normal " << c.normal.transpose());
+    CHECK(models::human_hand.find_link(c.link) >= 0);
+    CHECK(c.link != "palm");
+    CHECK(c.normal.norm() == Approx(1.0));
+    CHECK(c.force >= 0.0);
+    force += c.force;
+  }
+  CHECK(force > 1.0);
+  CHECK(closing_record(held).contact_points.size() == held.contact_points.size());
   // Released for 0.25 s, the unbalanced fingers move it: the record measures that motion.
   const auto released = close(true, 15);
   CHECK(released.object_shift > 0.0);

@@ -82,6 +82,9 @@ struct CloseResult {
   double object_shift = 0.0;
   /// How far the object turned over the same time (rad).
   double object_turn = 0.0;
+  /// The hand-object contact points when closing ends (HandScene::hand_contact_list()), point
+  /// and normal in the object's frame.
+  std::vector<HandContact> contact_points;
 };
 
 /// What a closing did, as a grasp's record keeps it (HumanGrasp, HandTransfer).
@@ -90,12 +93,14 @@ struct ClosingRecord {
   int contacts = 0;           ///< hand-object contact points when closing ended
   double object_shift = 0.0;  ///< how far the object's centre of mass moved while closing (m)
   double object_turn = 0.0;   ///< how far the object turned while closing (rad)
+  /// The contact points when closing ended: link, point and normal in the object's frame, force.
+  std::vector<HandContact> contact_points;
 };
 
 /// The record of closing \p c.
 template <int NQ>
-[[nodiscard]] ClosingRecord closing_record(const CloseResult<NQ>& c) noexcept {
-  return {c.touching_joints, c.contacts, c.object_shift, c.object_turn};
+[[nodiscard]] ClosingRecord closing_record(const CloseResult<NQ>& c) {
+  return {c.touching_joints, c.contacts, c.object_shift, c.object_turn, c.contact_points};
 }
 
 /// The targets a closed hand holds with: each joint with a closing direction at its closed
@@ -270,6 +275,12 @@ CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options
   scene.set_joint_targets(hold_targets(scene, result.q_closed, options.hold_fraction));
   scene.set_effort_fraction(1.0);
   result.contacts = scene.hand_contacts();
+  const Eigen::Isometry3d to_object = scene.object_pose().inverse();
+  result.contact_points = scene.hand_contact_list();
+  for (HandContact& c : result.contact_points) {
+    c.point = to_object * c.point;
+    c.normal = to_object.linear() * c.normal;
+  }
   result.object_shift = (scene.object_com() - com_start).norm();
   result.object_turn =
       Eigen::AngleAxisd(object_start.linear().transpose() * scene.object_pose().linear()).angle();

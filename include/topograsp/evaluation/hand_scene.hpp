@@ -49,6 +49,14 @@ struct HandSceneOptions {
   double servo_damping_time = 0.01;
 };
 
+/// One hand-object contact point (HandScene::hand_contact_list()).
+struct HandContact {
+  std::string link;             ///< the name of the link it is on
+  Vec3 point = Vec3::Zero();    ///< the contact point (m; world frame, or as its holder says)
+  Vec3 normal = Vec3::UnitZ();  ///< unit, pointing into the object
+  double force = 0.0;           ///< the normal force it carried over the last step (N)
+};
+
 /// A hand of model \p M (a reference to a constexpr Model) holding an object, over scalar \p S.
 ///
 /// The hand frame (the model's root link) is carried to hand_pose() like a mocap body. Each
@@ -366,6 +374,29 @@ class HandScene {
       return buf;
     }
     return {};
+  }
+
+  /// The hand-object contact points of the last step with a separation of at most
+  /// \p max_separation (m), each with the name of the link it is on, the world point,
+  /// the unit normal pointing into the object and the normal force it carried over the last step
+  /// (N, >= 0): what a record of the grasp keeps (CloseResult::contact_points). Allocates the
+  /// returned vector.
+  [[nodiscard]] std::vector<HandContact> hand_contact_list(double max_separation = 0.0) const {
+    std::vector<HandContact> out;
+    const double dt = world_.options().time_step;
+    for_each_contact(world_.manifolds(), object_,
+                     [&](const Manifold<S>& m, const ContactPoint<S>& p) {
+                       if (!(static_cast<double>(p.separation) <= max_separation)) return;
+                       const int body = m.body_a == object_ ? m.body_b : m.body_a;
+                       std::string link;
+                       for (std::size_t l = 0; l < link_body_.size(); ++l)
+                         if (link_body_[l] == body) link = std::string(M.links[l].spec.name.view());
+                       const double into_object = m.body_b == object_ ? 1.0 : -1.0;
+                       out.push_back({std::move(link), p.point.template cast<double>(),
+                                      into_object * p.normal.template cast<double>(),
+                                      static_cast<double>(p.step_impulse) / dt});
+                     });
+    return out;
   }
 
   /// The hand-object contact points of the last step with a separation of at most
