@@ -333,6 +333,7 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
       GraspSimOptions& sim = cli.experiment.transfer.sim;
       sim.close.hold_object = held;
       sim.close.release_steps = held ? 15 : 0;
+      sim.close.proximal_first = held;
       sim.palm_first = held;
     } else if (arg == "--winding-reference") {
       cli.experiment.transfer.winding_reference =

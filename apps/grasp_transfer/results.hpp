@@ -275,6 +275,7 @@ inline void check_scene_names(const ExperimentOptions& options) {
   cfg.set("palm_first", options.transfer.sim.palm_first);
   cfg.set("hold_object", options.transfer.sim.close.hold_object);
   cfg.set("release_steps", options.transfer.sim.close.release_steps);
+  cfg.set("proximal_first", options.transfer.sim.close.proximal_first);
   cfg.set("stability",
           detail::json_stability_options(options.transfer.sim.stability,
                                          options.transfer.sim.scene.stepper.time_step));

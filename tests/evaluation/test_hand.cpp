@@ -54,6 +54,17 @@ void check_closing(const Vec<M.nq>& q, const Eigen::Vector3d& centre, const Eige
       CHECK(m.points[static_cast<std::size_t>(k)].separation > -0.01);
 }
 
+// The human hand (thumb CMC2 opened, every other joint at 0) and a 0.3 kg cylinder of radius
+// 2 cm, 16 cm long, across its fingers at \p centre (hand frame).
+HandScene<models::human_hand> human_cylinder_scene(const Eigen::Vector3d& centre) {
+  const Eigen::Isometry3d hand =
+      test::z_along(Eigen::Vector3d(1, 1, 0).normalized(), Eigen::Vector3d(0.1, -0.2, 0.5));
+  Vec<20> q = Vec<20>::Zero();
+  q[17] = 0.3;  // thumb CMC2 opened (it closes toward negative values)
+  return HandScene<models::human_hand>(
+      hand, q, cylinder_object(hand, centre, Eigen::Vector3d::UnitY(), 0.02, 0.08, 0.3));
+}
+
 }  // namespace
 
 TEST_CASE("closing each shipped hand on a cylinder stops every finger at contact",
@@ -82,14 +93,8 @@ TEST_CASE("held closing: the object stays still while the fingers close, free it
           "[evaluation][close]") {
   // The human hand and the thin cylinder of the test above: the curling fingers sweep it out
   // when it is free; held, it does not move until it is released, and the record says so.
-  const Eigen::Isometry3d hand =
-      test::z_along(Eigen::Vector3d(1, 1, 0).normalized(), Eigen::Vector3d(0.1, -0.2, 0.5));
-  Vec<20> q = Vec<20>::Zero();
-  q[17] = 0.3;
   const auto close = [&](bool held, int release_steps) {
-    HandScene<models::human_hand> scene(
-        hand, q,
-        cylinder_object(hand, {0.045, 0.0, 0.11}, Eigen::Vector3d::UnitY(), 0.02, 0.08, 0.3));
+    auto scene = human_cylinder_scene({0.045, 0.0, 0.11});
     CloseOptions o;
     o.hold_object = held;
     o.release_steps = release_steps;
@@ -122,6 +127,42 @@ TEST_CASE("held closing: the object stays still while the fingers close, free it
   // Released for 0.25 s, the unbalanced fingers move it: the record measures that motion.
   const auto released = close(true, 15);
   CHECK(released.object_shift > 0.0);
+}
+
+TEST_CASE("closing proximal first wraps the fingers: the knuckle, then the middle joint",
+          "[evaluation][close]") {
+  // A thin cylinder held against the palm: closing every joint at once, each finger meets it
+  // with its tip alone; knuckle first, the knuckles close over it and the middle phalanges
+  // come down on it as well.
+  const auto close = [&](bool proximal_first) {
+    auto scene = human_cylinder_scene({0.03, 0.0, 0.07});
+    CloseOptions o;
+    o.hold_object = true;
+    o.proximal_first = proximal_first;
+    const auto r = close_hand(scene, o);
+    REQUIRE(r.status == Status::success);
+    return r;
+  };
+  const auto all_at_once = close(false), wrapped = close(true);
+  const auto touches = [](const CloseResult<20>& r, const std::string& link) {
+    for (const HandContact& c : r.contact_points)
+      if (c.link == link) return true;
+    return false;
+  };
+  int middle_all_at_once = 0, middle_wrapped = 0;
+  for (const char* finger : {"index", "middle", "ring", "pinky"}) {
+    const std::string f = finger;
+    INFO(f);
+    middle_all_at_once += touches(all_at_once, f + "_pip") ? 1 : 0;
+    middle_wrapped += touches(wrapped, f + "_pip") ? 1 : 0;
+    CHECK(touches(all_at_once, f + "_dip"));
+    CHECK(touches(wrapped, f + "_dip"));
+    // The knuckle closed before the joints after it moved, and so further.
+    const int mcp = models::human_hand.find_joint(f + "_mcp");
+    CHECK(wrapped.q_contact[mcp] > all_at_once.q_contact[mcp] + 0.3);
+  }
+  CHECK(middle_all_at_once == 0);
+  CHECK(middle_wrapped >= 3);
 }
 
 TEST_CASE("the grip comes from the motors, not from the pads' stiffness", "[evaluation][close]") {

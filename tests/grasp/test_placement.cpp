@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include <cmath>
 #include <limits>
 
 #include <catch2/catch.hpp>
@@ -57,7 +58,7 @@ TEST_CASE("approach until contact stops at the gap, and reports a miss", "[grasp
   CHECK_FALSE(approach_until_contact<schunk_sdh_free>(start, Vec3::UnitX(), object).has_value());
 }
 
-TEST_CASE("the palm-first approach moves the palm in past the first contact, fingers opening",
+TEST_CASE("the palm-first approach brings the palm to the object, fingers opening, hand sliding",
           "[grasp][placement]") {
   using models::human_hand_free;
   const GraspObject bottle = objects::bottle();
@@ -72,7 +73,7 @@ TEST_CASE("the palm-first approach moves the palm in past the first contact, fin
   pre[human_hand_free.joint("index_pip") - 6] = 0.6;
   const int palm = human_hand_free.link("palm");
   const Vec<26> start = place_frame<human_hand_free>(T, human_hand_free.frame("grasp_centre"), pre);
-  // The distance of the palm and of the nearest link to the bottle at q.
+  // The distance of the palm and of the nearest other link to the bottle at q.
   const auto distances = [&](const Vec<26>& q) {
     KinematicsData<human_hand_free> d;
     forward_kinematics(d, q);
@@ -80,27 +81,42 @@ TEST_CASE("the palm-first approach moves the palm in past the first contact, fin
     for (std::size_t i = 0; i < human_hand_free.n_shapes; ++i)
       for (const Primitive& p : object.parts()) {
         const double dist = signed_distance(world_shape(d, i), p).distance;
-        nearest = std::min(nearest, dist);
-        if (human_hand_free.shapes[i].link == palm) to_palm = std::min(to_palm, dist);
+        if (human_hand_free.shapes[i].link == palm)
+          to_palm = std::min(to_palm, dist);
+        else
+          nearest = std::min(nearest, dist);
       }
     return std::pair{to_palm, nearest};
   };
   const auto first = approach_until_contact<human_hand_free>(start, Vec3::UnitX(), object, 0.002);
-  const auto placed =
-      approach_palm_first<human_hand_free>(start, Vec3::UnitX(), object, palm, 0.002);
+  PalmApproachOptions no_slide;
+  no_slide.max_slide = 0.0;
+  const auto blocked =
+      approach_palm_first<human_hand_free>(start, Vec3::UnitX(), object, palm, no_slide);
+  const auto placed = approach_palm_first<human_hand_free>(start, Vec3::UnitX(), object, palm);
   REQUIRE(first);
+  REQUIRE(blocked);
   REQUIRE(placed);
   const auto [palm_first, nearest_first] = distances(*first);
+  const auto [palm_blocked, nearest_blocked] = distances(*blocked);
   const auto [palm_placed, nearest_placed] = distances(*placed);
-  INFO("palm " << palm_first << " m from the bottle at the first contact, " << palm_placed
-               << " m palm first");
-  // Nothing closer than the gap, something at it (the palm, or a link that cannot open more).
-  CHECK(nearest_first == Approx(0.002).margin(1e-4));
+  INFO("palm " << palm_first << " m from the bottle at the first contact, " << palm_blocked
+               << " m palm first without sliding, " << palm_placed << " m with");
+  // The first contact stands the thumb out: the palm is more than 2 cm away.
+  CHECK(std::min(palm_first, nearest_first) == Approx(0.002).margin(1e-4));
+  CHECK(palm_first > 0.02);
+  // Without sliding, a link that cannot open (the thumb's base) stops the palm short, at the gap.
+  CHECK(palm_blocked > 0.001);
+  CHECK(nearest_blocked == Approx(0.002).margin(1e-4));
+  CHECK((*blocked - start).segment<2>(1).norm() == Approx(0.0).margin(1e-15));  // no sideways move
+  // Sliding sideways (square to the approach, within max_slide), the palm touches the bottle,
+  // the fingers still at least the gap away.
+  CHECK(palm_placed == Approx(0.0).margin(2e-5));
   CHECK(nearest_placed >= 0.002 - 1e-9);
-  CHECK(nearest_placed <= 0.002 + 1e-4);
-  // The palm came in by more than 2 cm: the thumb standing out had stopped the first approach.
-  CHECK(palm_placed < palm_first - 0.02);
-  CHECK(palm_placed < 0.01);
+  const Vec3 slide = (*placed).head<3>() - (*blocked).head<3>();
+  CHECK(std::abs(slide.y()) > 0.001);
+  CHECK(std::abs(slide.y()) <= 0.04 + 1e-12);
+  CHECK(slide.z() == Approx(0.0).margin(1e-15));
   // Only the closing joints moved, and only toward open.
   const Vec<26> dir = closing_directions<human_hand_free>();
   for (int i = 6; i < 26; ++i) {
@@ -108,6 +124,29 @@ TEST_CASE("the palm-first approach moves the palm in past the first contact, fin
     CHECK(dir[i] * ((*placed)[i] - start[i]) <= 1e-12);
   }
   // Missing the object is reported.
-  CHECK_FALSE(
-      approach_palm_first<human_hand_free>(start, Vec3::UnitY(), object, palm, 0.002).has_value());
+  CHECK_FALSE(approach_palm_first<human_hand_free>(start, Vec3::UnitY(), object, palm).has_value());
+}
+
+TEST_CASE("the palm-first approach names the option it refuses", "[grasp][placement]") {
+  using models::human_hand_free;
+  const Composite object = objects::bottle().composite();
+  const Vec<26> start = Vec<26>::Zero();
+  const int palm = human_hand_free.link("palm");
+  const auto refused = [&](void (*set)(PalmApproachOptions&), const char* name) {
+    PalmApproachOptions o;
+    set(o);
+    CHECK_THROWS_WITH(approach_palm_first<human_hand_free>(start, Vec3::UnitX(), object, palm, o),
+                      Catch::Contains(name));
+  };
+  refused([](PalmApproachOptions& o) { o.gap = -0.001; }, "options.gap");
+  refused([](PalmApproachOptions& o) { o.palm_gap = std::nan(""); }, "options.palm_gap");
+  refused([](PalmApproachOptions& o) { o.max_slide = -1.0; }, "options.max_slide");
+  refused([](PalmApproachOptions& o) { o.max_travel = 0.0; }, "options.max_travel");
+  refused([](PalmApproachOptions& o) { o.open_step = 0.0; }, "options.open_step");
+  refused([](PalmApproachOptions& o) { o.slide_step = HUGE_VAL; }, "options.slide_step");
+  CHECK_THROWS_WITH(approach_palm_first<human_hand_free>(start, Vec3::UnitX(), object, -1),
+                    Catch::StartsWith("palm"));
+  CHECK_THROWS_AS(approach_palm_first<human_hand_free>(start, Vec3::UnitX(), object,
+                                                       static_cast<int>(human_hand_free.n_links)),
+                  invalid_argument);
 }

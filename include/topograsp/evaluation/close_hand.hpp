@@ -48,6 +48,13 @@ struct CloseOptions {
   /// and CloseResult::object_shift says how far); in [0, 1000000]. Default 0 (--closing held: 15,
   /// 0.25 s).
   int release_steps = 0;
+  /// Whether the search for first contact closes each finger from its base out: a joint moves only
+  /// once every closing joint before it on its chain has stopped (a person's power grasp: the
+  /// knuckle closes until the finger meets the object, then the middle joint, then the last, so
+  /// the finger wraps the object instead of meeting it with its tip alone). False: every joint
+  /// moves at once and the first link to touch stops its whole chain. Default false (--closing
+  /// held: true).
+  bool proximal_first = false;
 };
 
 /// The numeric fields of CloseOptions with their valid ranges (close_hand() checks them).
@@ -149,9 +156,10 @@ std::array<bool, std::remove_cvref_t<decltype(M)>::n_links> links_after_joint(in
 /// Closes the hand of \p scene on its object with its motors. First a geometric search (the
 /// object held still at its pose): every joint with a closing direction (LinkSpec::closing)
 /// moves that way in increments, all joints in turn, until one of the links after it touches
-/// the object (refined by bisection) or it reaches its limit. The hand is placed there; then
-/// every closing joint's motor is commanded to its closed limit and every other joint's to stay,
-/// all at options.hold_fraction of their torque limits, and the scene is stepped
+/// the object (refined by bisection) or it reaches its limit (options.proximal_first: a joint
+/// waits until every closing joint before it on its chain has stopped). The hand is placed there;
+/// then every closing joint's motor is commanded to its closed limit and every other joint's to
+/// stay, all at options.hold_fraction of their torque limits, and the scene is stepped
 /// options.closing_steps times with gravity off, the object held still (options.hold_object):
 /// each finger closes until it stalls on the object, pressing with what its motor gives, or
 /// reaches its limit. Then the object is released and the scene stepped options.release_steps
@@ -222,13 +230,37 @@ CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options
                   range / k_max_close_increments, range, k_max_close_increments, options.step);
     detail::throw_invalid_argument("options.step", buf);
   }
-  const int max_iterations = static_cast<int>(increments) + 2;
+  // before[i][j]: closing joint j comes before joint i on its chain (every link joint i moves,
+  // joint j moves too; of two joints that move the same links, the first in the configuration).
+  std::array<std::array<bool, static_cast<std::size_t>(nq)>, static_cast<std::size_t>(nq)> before{};
+  for (int i = 0; i < nq; ++i)
+    for (int j = 0; j < nq; ++j) {
+      if (j == i || dir[j] == 0.0) continue;
+      bool all = true, some = false;
+      for (std::size_t l = 0; l < ModelType::n_links; ++l)
+        if (after[static_cast<std::size_t>(i)][l]) {
+          some = true;
+          all = all && after[static_cast<std::size_t>(j)][l];
+        }
+      const bool same = after[static_cast<std::size_t>(i)] == after[static_cast<std::size_t>(j)];
+      before[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] =
+          some && all && (!same || j < i);
+    }
+  // Proximal first, a chain's joints move one after another: nq phases at most.
+  const int max_iterations = (static_cast<int>(increments) + 2) * (options.proximal_first ? nq : 1);
   for (int it = 0; it < max_iterations; ++it) {
     bool any = false;
     for (int i = 0; i < nq; ++i) {
       const auto u = static_cast<std::size_t>(i);
       if (!moving[u]) continue;
       any = true;
+      if (options.proximal_first) {
+        bool waiting = false;
+        for (int j = 0; j < nq; ++j)
+          waiting = waiting ||
+                    (before[u][static_cast<std::size_t>(j)] && moving[static_cast<std::size_t>(j)]);
+        if (waiting) continue;
+      }
       Vec<nq> trial = q;
       trial[i] = std::clamp(q[i] + dir[i] * options.step, lo[i], hi[i]);
       if (touching(trial, i)) {

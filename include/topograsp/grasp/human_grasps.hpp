@@ -74,8 +74,9 @@ struct GraspSimOptions {
   double contact_gap = 0.002;  ///< how close the approach brings the hand to the object (m)
   double standoff = 0.12;      ///< where the approach starts, back from the face (m)
   /// How the human hand approaches a hypothesis: true, palm first (approach_palm_first(): the
-  /// palm moves in until it meets the object, the fingers opening where they would enter it, as
-  /// a person grasping an object brings the palm to it); false (the default, the protocol of the
+  /// palm moves in until it touches the object, the fingers opening where they would enter it and
+  /// the hand sliding sideways where they cannot, as a person grasping an object brings the palm
+  /// to it; the fingers stop contact_gap short); false (the default, the protocol of the
   /// published results), until any link first touches (approach_until_contact(), usually the
   /// opposed thumb).
   bool palm_first = false;
@@ -265,10 +266,12 @@ template <class = void>
   const Vec<26> start =
       place_frame<models::human_hand_free>(T, models::human_hand_free.frame("grasp_centre"), pre);
   constexpr auto& free = models::human_hand_free;
+  PalmApproachOptions palm_approach;
+  palm_approach.gap = options.contact_gap;
+  palm_approach.max_travel = 2.0 * options.standoff;
   const auto touched =
       options.palm_first
-          ? approach_palm_first<free>(start, h.approach, shape, free.link("palm"),
-                                      options.contact_gap, 2.0 * options.standoff)
+          ? approach_palm_first<free>(start, h.approach, shape, free.link("palm"), palm_approach)
           : approach_until_contact<free>(start, h.approach, shape, options.contact_gap,
                                          2.0 * options.standoff);
   if (!touched) return std::nullopt;
