@@ -49,6 +49,7 @@ TEST_CASE("a hand scene exports as articulated MJCF: mocap hand, joints, motors,
   CHECK(xml.find("cone=\"elliptic\"") != std::string::npos);
   CHECK(xml.find("impratio=\"10\"") != std::string::npos);
   CHECK(xml.find("integrator=\"implicit\"") != std::string::npos);
+  CHECK(xml.find("<flag multiccd=\"enable\"/>") != std::string::npos);
   CHECK(xml.find("<key name=\"grasp\"") != std::string::npos);
   CHECK(xml.find("nan") == std::string::npos);
   // 8 joints (the knuckle's mirror coupled by one equality), 7 motors of 0.5 N m.
@@ -88,6 +89,7 @@ TEST_CASE("a hand scene exports as articulated MJCF: mocap hand, joints, motors,
   CHECK(m.opt.cone == mjCONE_ELLIPTIC);
   CHECK(m.opt.integrator == mjINT_IMPLICIT);
   CHECK(m.opt.impratio == Approx(10.0));
+  CHECK((m.opt.enableflags & mjENBL_MULTICCD) != 0);
   const int object = mj_name2id(&m, mjOBJ_BODY, "object");
   REQUIRE(object >= 0);
   CHECK(m.body_mass[object] == Approx(0.5));

@@ -93,6 +93,25 @@ TEST_CASE("a box held by the SDH's motors stays in MuJoCo; motors too weak drop 
   }
 }
 
+TEST_CASE("MuJoCo's convex collider gives several points a pair with multi_point_contacts",
+          "[evaluation][mujoco]") {
+  // The SDH's pads on a bottle (a cylinder: MuJoCo 2.2's general convex collider): one point per
+  // pad without the flag, more with it, as the built-in stepper's manifolds have.
+  auto scene = test::sdh_bottle_scene(0.9);
+  REQUIRE(close_hand(scene).status == Status::success);
+  MjcfOptions one = sdh_motors(1.0), several = sdh_motors(1.0);
+  one.multi_point_contacts = false;
+  MujocoScene a(scene, one), b(scene, several);
+  REQUIRE(a.step() == Status::success);
+  REQUIRE(b.step() == Status::success);
+  const int pairs_touching = a.hand_contacts(0.001);
+  INFO(pairs_touching << " contacts with one point a pair, " << b.hand_contacts(0.001)
+                      << " with several");
+  CHECK(pairs_touching >= 2);
+  CHECK(b.hand_contacts(0.001) > pairs_touching);
+  CHECK(to_mjcf(scene, one).find("multiccd") == std::string::npos);
+}
+
 TEST_CASE("MuJoCo scene gravity moves a free object along it; copies are independent",
           "[evaluation][mujoco]") {
   const auto built_in = sdh_box_scene(true);
