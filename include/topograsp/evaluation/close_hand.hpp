@@ -233,7 +233,7 @@ CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options
   // before[i][j]: closing joint j comes before joint i on its chain (every link joint i moves,
   // joint j moves too; of two joints that move the same links, the first in the configuration).
   std::array<std::array<bool, static_cast<std::size_t>(nq)>, static_cast<std::size_t>(nq)> before{};
-  for (int i = 0; i < nq; ++i)
+  for (int i = 0; i < nq && options.proximal_first; ++i)
     for (int j = 0; j < nq; ++j) {
       if (j == i || dir[j] == 0.0) continue;
       bool all = true, some = false;

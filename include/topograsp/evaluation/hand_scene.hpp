@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cstdio>
 #include <span>
 #include <string>
@@ -384,18 +385,16 @@ class HandScene {
   [[nodiscard]] std::vector<HandContact> hand_contact_list(double max_separation = 0.0) const {
     std::vector<HandContact> out;
     const double dt = world_.options().time_step;
-    for_each_contact(world_.manifolds(), object_,
-                     [&](const Manifold<S>& m, const ContactPoint<S>& p) {
-                       if (!(static_cast<double>(p.separation) <= max_separation)) return;
-                       const int body = m.body_a == object_ ? m.body_b : m.body_a;
-                       std::string link;
-                       for (std::size_t l = 0; l < link_body_.size(); ++l)
-                         if (link_body_[l] == body) link = std::string(M.links[l].spec.name.view());
-                       const double into_object = m.body_b == object_ ? 1.0 : -1.0;
-                       out.push_back({std::move(link), p.point.template cast<double>(),
-                                      into_object * p.normal.template cast<double>(),
-                                      static_cast<double>(p.step_impulse) / dt});
-                     });
+    for_each_hand_contact(
+        max_separation, [&](const Manifold<S>& m, const ContactPoint<S>& p, const Vec3& normal) {
+          const int body = m.body_a == object_ ? m.body_b : m.body_a;
+          const auto l = std::find(link_body_.begin(), link_body_.end(), body) - link_body_.begin();
+          std::string link;
+          if (l < static_cast<std::ptrdiff_t>(link_body_.size()))
+            link = std::string(M.links[static_cast<std::size_t>(l)].spec.name.view());
+          out.push_back({std::move(link), p.point.template cast<double>(), normal,
+                         static_cast<double>(p.step_impulse) / dt});
+        });
     return out;
   }
 
@@ -406,19 +405,26 @@ class HandScene {
   [[nodiscard]] std::vector<ContactForQuality> hand_contact_points(
       double max_separation = 0.0) const {
     std::vector<ContactForQuality> out;
+    for_each_hand_contact(
+        max_separation, [&](const Manifold<S>& m, const ContactPoint<S>& p, const Vec3& normal) {
+          out.push_back({p.point.template cast<double>(), normal, static_cast<double>(m.friction)});
+        });
+    return out;
+  }
+
+ private:
+  // Calls f(manifold, point, unit normal into the object) for each hand-object contact point of
+  // the last step with a separation of at most max_separation (m).
+  template <class F>
+  void for_each_hand_contact(double max_separation, F&& f) const {
     for_each_contact(world_.manifolds(), object_,
                      [&](const Manifold<S>& m, const ContactPoint<S>& p) {
                        if (!(static_cast<double>(p.separation) <= max_separation)) return;
                        // A manifold's normal points from body A into body B.
                        const double into_object = m.body_b == object_ ? 1.0 : -1.0;
-                       out.push_back({p.point.template cast<double>(),
-                                      into_object * p.normal.template cast<double>(),
-                                      static_cast<double>(m.friction)});
+                       f(m, p, Vec3(into_object * p.normal.template cast<double>()));
                      });
-    return out;
   }
-
- private:
   // Every actuated joint needs a motor: an effort and a velocity limit.
   static void require_motors() {
     for (int i = 0; i < nq; ++i) {
