@@ -324,16 +324,19 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
       cli.experiment.hypotheses =
           enum_from_name(value, {HypothesisRule::box, HypothesisRule::demonstrator}, arg, "rule");
     } else if (arg == "--closing") {
-      if (value != "free" && value != "held")
+      if (value != "free" && value != "held" && value != "balanced")
         detail::throw_invalid_argument(
-            arg, "expected free or held, got " + detail::quote_argument(value));
-      // held: every hand closes on the object held still, released for 0.25 s (gravity off)
-      // before the tests, and the human hand approaches palm first (docs/evaluation.md).
-      const bool held = value == "held";
+            arg, "expected free, held or balanced, got " + detail::quote_argument(value));
+      // held: every hand closes on the object held still, the object released for 0.25 s
+      // (gravity off) before the tests, and the human hand approaches palm first; balanced: the
+      // same, each hand holding with torques whose contact forces balance on the object
+      // (docs/evaluation.md).
+      const bool held = value != "free";
       GraspSimOptions& sim = cli.experiment.transfer.sim;
       sim.close.hold_object = held;
       sim.close.release_steps = held ? 15 : 0;
       sim.close.proximal_first = held;
+      sim.close.balanced_hold = value == "balanced";
       sim.palm_first = held;
     } else if (arg == "--winding-reference") {
       cli.experiment.transfer.winding_reference =
@@ -442,9 +445,10 @@ options:
                    rolls per reachable box face) or demonstrator (8 rolls per face, each also
                    jittered once in position, tilt and roll by a seeded rule; docs/evaluation.md)
   --closing C      free (default: the object is free while the hands close, and the human hand
-                   approaches until any link touches) or held (every hand closes on the object
+                   approaches until any link touches), held (every hand closes on the object
                    held still, which is then released for 0.25 s before the tests; the human
-                   hand approaches palm first)
+                   hand approaches palm first) or balanced (held, and every hand holds with
+                   torques whose contact forces balance on the object)
   --winding-reference R  where the windings are taken: centre_of_mass (default, the paper)
                    or nearest_point (the object's point nearest the human's grasp centre)
   --friction MU    one Coulomb coefficient for every hand-object pair, in (0, 10], for a friction

@@ -224,12 +224,14 @@ void write_scenes(const std::filesystem::path& dir, const ExperimentOptions& exp
   if (!g.reached) return;
   detail::write_text_file(
       dir / scene_path(object.name, g.id, "human"),
-      grasp_mjcf<models::human_hand>(object, g.hand_pose, g.q, g.object_pose, experiment.transfer));
+      grasp_mjcf<models::human_hand>(object, g.hand_pose, g.q, g.object_pose, g.closing.hold_torque,
+                                     experiment.transfer));
   for (const SdhTransfer& t : transfers)
     if (t.planned)
-      detail::write_text_file(dir / scene_path(object.name, g.id, to_string(t.method)),
-                              grasp_mjcf<models::schunk_sdh>(object, t.hand_pose, t.q_closed,
-                                                             t.object_pose, experiment.transfer));
+      detail::write_text_file(
+          dir / scene_path(object.name, g.id, to_string(t.method)),
+          grasp_mjcf<models::schunk_sdh>(object, t.hand_pose, t.q_closed, t.object_pose,
+                                         t.closing.hold_torque, experiment.transfer));
 }
 
 // The experiment: run (or resume), journal each hypothesis, write and commit the output folder.

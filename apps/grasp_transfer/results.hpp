@@ -36,19 +36,24 @@ namespace topograsp {
 }
 
 /// The MJCF text of a closed grasp: hand model \p M at \p hand_pose with joints \p q, the object
-/// where it was after closing, the motors holding as closing left them (hold_targets() with
-/// options.sim.human_hold_fraction for the human hand, close.hold_fraction for a robot hand).
+/// where it was after closing, the motors holding with \p hold_torque as closing left them
+/// (ClosingRecord::hold_torque, by configuration entry; hold_targets()).
 template <const auto& M>
 [[nodiscard]] std::string grasp_mjcf(const GraspObject& object, const Eigen::Isometry3d& hand_pose,
                                      const Vec<M.nq>& q, const Eigen::Isometry3d& object_pose,
+                                     const std::vector<double>& hold_torque,
                                      const TransferOptions& options) {
   ObjectSpec spec = object_spec(object, hand_surface<M>(), options.sim.friction);
   spec.pose = to_pose(object_pose);
   HandScene<M> scene(hand_pose, q, spec, options.sim.scene);
-  scene.set_joint_targets(hold_targets(scene, q,
-                                       hand_surface<M>() == HandSurface::human_skin
-                                           ? options.sim.human_hold_fraction
-                                           : options.sim.close.hold_fraction));
+  if (hold_torque.size() != static_cast<std::size_t>(M.nq))
+    detail::throw_invalid_argument(
+        "hold_torque",
+        "expected " + std::to_string(M.nq) + " torques, got " + std::to_string(hold_torque.size()));
+  Vec<M.nq> load;
+  for (int i = 0; i < M.nq; ++i)
+    load[i] = hold_torque[static_cast<std::size_t>(i)] / M.joint_spec(i).effort;
+  scene.set_joint_targets(hold_targets(scene, q, load));
   return to_mjcf(scene);
 }
 
@@ -149,8 +154,9 @@ inline ObjectSymmetry symmetry_of(const Json& j) {
 }
 
 // What closing did, for a grasp record (null when nothing was simulated): the object's motion
-// while the hand closed, released and settled (m, rad), and the contacts when closing ended
-// (their count, and each point: its link, point and normal in the object's frame, force).
+// while the hand closed, released and settled (m, rad), the contacts when closing ended (their
+// count, and each point: its link, point and normal in the object's frame, force), and the
+// motors' holding torques (by configuration entry; balanced or not, and the imbalance).
 inline Json json_closing(const ClosingRecord* c) {
   if (c == nullptr) return Json();
   Json j = Json::object();
@@ -168,6 +174,11 @@ inline Json json_closing(const ClosingRecord* c) {
     points.push_back(q);
   }
   j.set("contact_points", points);
+  j.set("hold_torque",
+        json_vector(Eigen::Map<const Eigen::VectorXd>(
+            c->hold_torque.data(), static_cast<Eigen::Index>(c->hold_torque.size()))));
+  j.set("balanced_hold", c->balanced);
+  j.set("hold_imbalance", c->hold_imbalance);
   return j;
 }
 
@@ -276,6 +287,7 @@ inline void check_scene_names(const ExperimentOptions& options) {
   cfg.set("hold_object", options.transfer.sim.close.hold_object);
   cfg.set("release_steps", options.transfer.sim.close.release_steps);
   cfg.set("proximal_first", options.transfer.sim.close.proximal_first);
+  cfg.set("balanced_hold", options.transfer.sim.close.balanced_hold);
   cfg.set("stability",
           detail::json_stability_options(options.transfer.sim.stability,
                                          options.transfer.sim.scene.stepper.time_step));

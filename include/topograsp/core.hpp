@@ -7,5 +7,6 @@
 #include <topograsp/core/constants.hpp>
 #include <topograsp/core/eigen.hpp>
 #include <topograsp/core/error.hpp>
+#include <topograsp/core/nonnegative_least_squares.hpp>
 #include <topograsp/core/pose.hpp>
 #include <topograsp/core/status.hpp>

@@ -12,5 +12,6 @@
 #include <topograsp/evaluation/grasp_scene.hpp>
 #include <topograsp/evaluation/grasp_wrench.hpp>
 #include <topograsp/evaluation/hand_scene.hpp>
+#include <topograsp/evaluation/hold_balance.hpp>
 #include <topograsp/evaluation/stability_suite.hpp>
 #include <topograsp/evaluation/statistics.hpp>

@@ -121,13 +121,21 @@ TEST_CASE("the options --hypotheses and --closing choose the demonstrations' rul
   CHECK_FALSE(d.experiment.transfer.sim.palm_first);
   CHECK(parse({"--hypotheses", "demonstrator"}).experiment.hypotheses ==
         HypothesisRule::demonstrator);
-  const CommandLine held = parse({"--closing", "held"});
-  CHECK(held.experiment.transfer.sim.close.hold_object);
-  CHECK(held.experiment.transfer.sim.close.release_steps == 15);
-  CHECK(held.experiment.transfer.sim.palm_first);
+  // held and balanced share the protocol; balanced also holds with balanced torques.
+  for (const char* closing : {"held", "balanced"}) {
+    INFO(closing);
+    const CommandLine cli = parse({"--closing", closing});
+    const GraspSimOptions& sim = cli.experiment.transfer.sim;
+    CHECK(sim.close.hold_object);
+    CHECK(sim.close.release_steps == 15);
+    CHECK(sim.palm_first);
+    CHECK(sim.close.proximal_first);
+    CHECK(sim.close.balanced_hold == (std::string_view(closing) == "balanced"));
+  }
+  CHECK_FALSE(d.experiment.transfer.sim.close.balanced_hold);
   CHECK_FALSE(parse({"--closing", "free"}).experiment.transfer.sim.close.hold_object);
   CHECK_THAT(error_of({"--closing", "fixed"}),
-             Catch::StartsWith("--closing: expected free or held"));
+             Catch::StartsWith("--closing: expected free, held or balanced"));
   CHECK_THAT(error_of({"--hypotheses", "many"}), Catch::StartsWith("--hypotheses: "));
   CHECK_THAT(error_of({"--closing", "held", "--closing", "free"}),
              Catch::StartsWith("--closing: given twice"));

@@ -227,6 +227,12 @@ TEST_CASE("a small experiment: counts, schema and determinism", "[grasp][experim
         CHECK(std::hypot(n[0].as_number(), n[1].as_number(), n[2].as_number()) == Approx(1.0));
         CHECK(p.at("force").as_number() >= 0.0);
       }
+      // The motors' holding torques, one per joint of the grasp's hand (the human's 20, the
+      // SDH's 7); uniform here (free closing), so not balanced and no imbalance.
+      CHECK(closing.at("hold_torque").as_array().size() ==
+            (g.at("method").as_string() == "human" ? 20u : 7u));
+      CHECK_FALSE(closing.at("balanced_hold").as_bool());
+      CHECK(closing.at("hold_imbalance").as_number() == 0.0);
     }
   }
 

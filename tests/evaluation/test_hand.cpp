@@ -129,6 +129,87 @@ TEST_CASE("held closing: the object stays still while the fingers close, free it
   CHECK(released.object_shift > 0.0);
 }
 
+TEST_CASE("a balanced hold keeps the released object where the fingers closed on it",
+          "[evaluation][close]") {
+  // A cylinder held while the human fingers close, released for 0.25 s: with every closing
+  // joint pressing with its limit the unbalanced forces push it; with the torques of
+  // balance_hold() it moves less, as far as the contacts let the forces balance.
+  const auto close = [&](const Eigen::Vector3d& centre, bool balanced) {
+    auto scene = human_cylinder_scene(centre);
+    CloseOptions o;
+    o.hold_object = true;
+    o.release_steps = 15;
+    o.balanced_hold = balanced;
+    const auto r = close_hand(scene, o);
+    REQUIRE(r.status == Status::success);
+    return r;
+  };
+  SECTION("against the palm: the palm opposes the fingers, the forces balance") {
+    const Eigen::Vector3d centre(0.03, 0.0, 0.07);
+    const auto uniform = close(centre, false), balanced = close(centre, true);
+    INFO("uniform: moved " << uniform.object_shift << " m, balanced: " << balanced.object_shift);
+    CHECK_FALSE(uniform.balanced);
+    for (int j = 0; j < 20; ++j)
+      CHECK(uniform.hold_torque[j] == Approx(uniform_hold_loads<models::human_hand>(0.5)[j] *
+                                             models::human_hand.joint_spec(j).effort));
+    REQUIRE(balanced.balanced);
+    CHECK(balanced.hold_imbalance < 0.01);
+    // Less than half as far (measured 9 mm against 27): the stepper's contact forces for these
+    // torques are not exactly the balanced ones, so the object still settles a little.
+    CHECK(balanced.object_shift < 0.5 * uniform.object_shift);
+    // The most loaded joint holds with hold_fraction of its limit, none with more.
+    double most = 0.0;
+    for (int j = 0; j < 20; ++j)
+      most = std::max(most,
+                      std::abs(balanced.hold_torque[j]) / models::human_hand.joint_spec(j).effort);
+    CHECK(most == Approx(0.5));
+    const ClosingRecord record = closing_record(balanced);
+    CHECK(record.balanced);
+    CHECK(record.hold_imbalance == balanced.hold_imbalance);
+    REQUIRE(record.hold_torque.size() == 20);
+    CHECK(record.hold_torque[1] == balanced.hold_torque[1]);
+  }
+  SECTION("across the fingers, no thumb opposing: the least imbalance, and it says so") {
+    const Eigen::Vector3d centre(0.045, 0.0, 0.11);
+    const auto uniform = close(centre, false), balanced = close(centre, true);
+    INFO("uniform: moved " << uniform.object_shift << " m, balanced: " << balanced.object_shift);
+    REQUIRE(balanced.balanced);
+    CHECK(balanced.hold_imbalance > 0.1);
+    CHECK(balanced.object_shift < 0.5 * uniform.object_shift);
+  }
+}
+
+TEST_CASE("balance_hold: forces that balance on the object, scaled to the hold fraction",
+          "[evaluation][close]") {
+  // The SDH closed on a bottle (uniform hold, object free): its three fingers' contact forces
+  // can balance; balance_hold() finds torques whose forces do, at the asked fraction.
+  auto scene = test::sdh_bottle_scene();
+  CloseOptions o;
+  o.hold_object = true;
+  REQUIRE(close_hand(scene, o).status == Status::success);
+  REQUIRE(scene.hand_contacts() >= 3);
+  for (const double fraction : {0.25, 1.0}) {
+    const HoldBalance<7> b = balance_hold(scene, fraction);
+    REQUIRE(b.found);
+    CHECK(b.contacts == scene.hand_contacts());
+    CHECK(b.imbalance < 0.01);
+    CHECK(b.squeeze > 1.0);
+    double most = 0.0;
+    for (int j = 0; j < 7; ++j)
+      most = std::max(most, std::abs(b.torque[j]) / models::schunk_sdh.joint_spec(j).effort);
+    CHECK(most == Approx(fraction));
+  }
+  // Twice the fraction, twice the torques and the squeeze.
+  const HoldBalance<7> half = balance_hold(scene, 0.5), full = balance_hold(scene, 1.0);
+  CHECK(full.torque.isApprox(2.0 * half.torque));
+  CHECK(full.squeeze == Approx(2.0 * half.squeeze));
+  CHECK_THROWS_WITH(balance_hold(scene, 0.0), Catch::StartsWith("hold_fraction: "));
+  CHECK_THROWS_WITH(balance_hold(scene, 1.5), Catch::StartsWith("hold_fraction: "));
+  // A hand that touches nothing has nothing to balance.
+  auto apart = test::sdh_bottle_scene();
+  CHECK_FALSE(balance_hold(apart, 0.5).found);
+}
+
 TEST_CASE("closing proximal first wraps the fingers: the knuckle, then the middle joint",
           "[evaluation][close]") {
   // A thin cylinder held against the palm: closing every joint at once, each finger meets it

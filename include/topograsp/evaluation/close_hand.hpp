@@ -13,6 +13,7 @@
 #include <topograsp/core/constants.hpp>
 #include <topograsp/core/parameters.hpp>
 #include <topograsp/evaluation/hand_scene.hpp>
+#include <topograsp/evaluation/hold_balance.hpp>
 
 namespace topograsp {
 
@@ -55,6 +56,13 @@ struct CloseOptions {
   /// moves at once and the first link to touch stops its whole chain. Default false (--closing
   /// held: true).
   bool proximal_first = false;
+  /// Whether the hand holds with torques whose contact forces balance on the object
+  /// (balance_hold(): the most loaded joint at hold_fraction of its limit, the others as the
+  /// balance needs), set when the fingers have closed, before the object's release, as a person
+  /// adjusts the fingers' forces to hold an object still. False: every closing joint presses with
+  /// hold_fraction of its limit, whether or not the forces balance. Default false (--closing
+  /// balanced: true).
+  bool balanced_hold = false;
 };
 
 /// The numeric fields of CloseOptions with their valid ranges (close_hand() checks them).
@@ -92,6 +100,14 @@ struct CloseResult {
   /// The hand-object contact points when closing ends (HandScene::hand_contact_list()), point
   /// and normal in the object's frame.
   std::vector<HandContact> contact_points;
+  /// Each motor's holding torque (N m, or N) when closing ends: hold_fraction of its limit in
+  /// its closing direction, or balance_hold()'s (CloseOptions::balanced_hold).
+  Vec<NQ> hold_torque = Vec<NQ>::Zero();
+  /// Whether hold_torque is balance_hold()'s (false: uniform, asked for or because no finger
+  /// touched the object when the fingers had closed).
+  bool balanced = false;
+  /// balance_hold()'s imbalance of the forces it balanced (0 when not balanced).
+  double hold_imbalance = 0.0;
 };
 
 /// What a closing did, as a grasp's record keeps it (HumanGrasp, HandTransfer).
@@ -102,12 +118,19 @@ struct ClosingRecord {
   double object_turn = 0.0;   ///< how far the object turned while closing (rad)
   /// The contact points when closing ended: link, point and normal in the object's frame, force.
   std::vector<HandContact> contact_points;
+  /// Each motor's holding torque (N m, or N), in configuration order (CloseResult::hold_torque).
+  std::vector<double> hold_torque;
+  bool balanced = false;        ///< whether the hold is balance_hold()'s
+  double hold_imbalance = 0.0;  ///< its imbalance (0 when not balanced)
 };
 
 /// The record of closing \p c.
 template <int NQ>
 [[nodiscard]] ClosingRecord closing_record(const CloseResult<NQ>& c) {
-  return {c.touching_joints, c.contacts, c.object_shift, c.object_turn, c.contact_points};
+  return {c.touching_joints, c.contacts,
+          c.object_shift,    c.object_turn,
+          c.contact_points,  std::vector<double>(c.hold_torque.data(), c.hold_torque.data() + NQ),
+          c.balanced,        c.hold_imbalance};
 }
 
 /// The targets a closed hand holds with: each joint with a closing direction at its closed
@@ -123,16 +146,23 @@ template <const auto& M>
   return out;
 }
 
-/// The targets a hand holds with once closed at \p q: each joint with a closing direction
-/// \p hold_fraction of its servo's reach (HandScene::servo_reach()) further closed, so that its
-/// motor presses with hold_fraction of its torque limit where it stands and stiffens against a
-/// load up to the full limit; every other joint where it is.
+/// The uniform holding loads: each joint with a closing direction \p hold_fraction of its torque
+/// limit (LinkSpec::effort) in that direction, every other joint 0 (the loads hold_targets()
+/// takes, signed fractions of each joint's limit).
+template <const auto& M>
+[[nodiscard]] Vec<M.nq> uniform_hold_loads(double hold_fraction) noexcept {
+  return closing_directions<M>() * hold_fraction;
+}
+
+/// The targets with which a hand at \p q holds with \p load (per joint, the signed fraction of
+/// its torque limit it presses with): each joint's servo target that fraction of its servo's
+/// reach (HandScene::servo_reach()) from where it stands, so that it presses with that torque
+/// there and stiffens against a load up to its full limit (with the scene's effort fraction 1).
 template <const auto& M, class S>
 [[nodiscard]] Vec<M.nq> hold_targets(const HandScene<M, S>& scene, const Vec<M.nq>& q,
-                                     double hold_fraction) noexcept {
-  const Vec<M.nq> dir = closing_directions<M>();
+                                     const Vec<M.nq>& load) noexcept {
   Vec<M.nq> out = q;
-  for (int i = 0; i < M.nq; ++i) out[i] += dir[i] * hold_fraction * scene.servo_reach(i);
+  for (int i = 0; i < M.nq; ++i) out[i] += load[i] * scene.servo_reach(i);
   return out;
 }
 
@@ -162,11 +192,15 @@ std::array<bool, std::remove_cvref_t<decltype(M)>::n_links> links_after_joint(in
 /// stay, all at options.hold_fraction of their torque limits, and the scene is stepped
 /// options.closing_steps times with gravity off, the object held still (options.hold_object):
 /// each finger closes until it stalls on the object, pressing with what its motor gives, or
-/// reaches its limit. Then the object is released and the scene stepped options.release_steps
-/// times, gravity still off, the motors still closing the fingers. The scene is left holding,
-/// gravity restored: each closing joint's servo targets hold_targets() (it presses with
-/// hold_fraction of its limit where it stands, and resists a load stiffly up to its full limit);
-/// the moment closing ends, the reference of the stability tests. Works for any model whose joints
+/// reaches its limit. With options.balanced_hold the motors then hold with balance_hold()'s
+/// torques (forces that balance on the object, the most loaded joint at hold_fraction of its
+/// limit) as position servos with their full limits (hold_targets()). Then the object is
+/// released and the scene stepped options.release_steps times, gravity still off, the motors
+/// still closing the fingers (or holding with the balanced torques). The scene is left holding,
+/// gravity restored: each joint's servo targets hold_targets() of CloseResult::hold_torque
+/// (uniform_hold_loads() unless balanced: it presses with that torque where it stands, and
+/// resists a load stiffly up to its full limit); the moment closing ends, the reference of the
+/// stability tests. Works for any model whose joints
 /// have motors (HandScene); joints with closing 0 (abduction, a free base) keep their value.
 /// \throws topograsp::invalid_argument naming the option for a field outside its range
 /// (close_parameters), or a step below the largest joint range / k_max_close_increments (a finer
@@ -297,14 +331,29 @@ CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options
   if (options.hold_object) w.set_held(scene.object_body(), true);
   for (int k = 0; k < options.closing_steps && result.status == Status::success; ++k)
     result.status = scene.step();
-  // Released, the object settles into the grasp, the motors still closing the fingers after it.
+  // The holding torques: uniform, or balanced over the contacts the fingers closed to, from now
+  // as position servos with their full limits.
+  Vec<nq> load = uniform_hold_loads<M>(options.hold_fraction);
+  if (options.balanced_hold && result.status == Status::success) {
+    const HoldBalance<nq> balance = balance_hold(scene, options.hold_fraction);
+    if (balance.found) {
+      for (int i = 0; i < nq; ++i) load[i] = balance.torque[i] / M.joint_spec(i).effort;
+      result.balanced = true;
+      result.hold_imbalance = balance.imbalance;
+      scene.set_effort_fraction(1.0);
+      scene.set_joint_targets(hold_targets(scene, scene.joint_positions(), load));
+    }
+  }
+  for (int i = 0; i < nq; ++i) result.hold_torque[i] = load[i] * M.joint_spec(i).effort;
+  // Released, the object settles into the grasp, the motors still closing the fingers after it
+  // (or holding with balanced torques).
   if (options.hold_object) w.set_held(scene.object_body(), false);
   for (int k = 0; k < options.release_steps && result.status == Status::success; ++k)
     result.status = scene.step();
   w.set_gravity(gravity.template cast<double>());
   result.q_closed = scene.joint_positions();
-  // Hold: the same torque where each finger stands, now as a position servo with its full limit.
-  scene.set_joint_targets(hold_targets(scene, result.q_closed, options.hold_fraction));
+  // Hold: the same torques where the fingers stand, as position servos with their full limits.
+  scene.set_joint_targets(hold_targets(scene, result.q_closed, load));
   scene.set_effort_fraction(1.0);
   result.contacts = scene.hand_contacts();
   const Eigen::Isometry3d to_object = scene.object_pose().inverse();

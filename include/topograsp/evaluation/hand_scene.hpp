@@ -56,6 +56,7 @@ struct HandContact {
   Vec3 point = Vec3::Zero();    ///< the contact point (m; world frame, or as its holder says)
   Vec3 normal = Vec3::UnitZ();  ///< unit, pointing into the object
   double force = 0.0;           ///< the normal force it carried over the last step (N)
+  double friction = 0.0;        ///< the Coulomb coefficient of its pair of shapes
 };
 
 /// A hand of model \p M (a reference to a constexpr Model) holding an object, over scalar \p S.
@@ -385,16 +386,16 @@ class HandScene {
   [[nodiscard]] std::vector<HandContact> hand_contact_list(double max_separation = 0.0) const {
     std::vector<HandContact> out;
     const double dt = world_.options().time_step;
-    for_each_hand_contact(
-        max_separation, [&](const Manifold<S>& m, const ContactPoint<S>& p, const Vec3& normal) {
-          const int body = m.body_a == object_ ? m.body_b : m.body_a;
-          const auto l = std::find(link_body_.begin(), link_body_.end(), body) - link_body_.begin();
-          std::string link;
-          if (l < static_cast<std::ptrdiff_t>(link_body_.size()))
-            link = std::string(M.links[static_cast<std::size_t>(l)].spec.name.view());
-          out.push_back({std::move(link), p.point.template cast<double>(), normal,
-                         static_cast<double>(p.step_impulse) / dt});
-        });
+    for_each_hand_contact(max_separation, [&](const Manifold<S>& m, const ContactPoint<S>& p,
+                                              const Vec3& normal) {
+      const int body = m.body_a == object_ ? m.body_b : m.body_a;
+      const auto l = std::find(link_body_.begin(), link_body_.end(), body) - link_body_.begin();
+      std::string link;
+      if (l < static_cast<std::ptrdiff_t>(link_body_.size()))
+        link = std::string(M.links[static_cast<std::size_t>(l)].spec.name.view());
+      out.push_back({std::move(link), p.point.template cast<double>(), normal,
+                     static_cast<double>(p.step_impulse) / dt, static_cast<double>(m.friction)});
+    });
     return out;
   }
 

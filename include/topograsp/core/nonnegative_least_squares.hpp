@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// nonnegative_least_squares(): min |A x - b| over x >= 0 by Lawson and Hanson's active-set
+/// method (Solving Least Squares Problems, 1974, chapter 23), for the small dense problems of the
+/// library (a grasp's contact forces: docs/evaluation.md, "The balanced hold").
+#pragma once
+
+#include <algorithm>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <Eigen/QR>
+
+#include <topograsp/core/eigen.hpp>
+#include <topograsp/core/error.hpp>
+
+namespace topograsp {
+
+/// What nonnegative_least_squares() found.
+struct NonnegativeLeastSquares {
+  Eigen::VectorXd x;      ///< the minimiser, every entry >= 0
+  double residual = 0.0;  ///< |A x - b|
+  int iterations = 0;     ///< columns brought into the passive set
+  bool converged = true;  ///< false if the iteration limit (3 x columns) stopped it
+};
+
+/// Minimises |A x - b| over x >= 0 (Lawson-Hanson): x starts at 0; while some column not yet
+/// used would lower the residual (its entry of the gradient A'(b - A x) is above a tolerance
+/// scaled by |A| |b|), it joins the passive set and x is the unconstrained least-squares
+/// solution over that set, stepped back to the bound (dropping the columns that reach 0) where
+/// an entry would turn negative. Exact for problems of a few hundred columns (each iteration
+/// one QR of the passive columns); stops after 3 x columns iterations (converged = false).
+/// \throws topograsp::invalid_argument naming "A" or "b" for non-finite entries, or "b" when its
+/// size differs from A's rows.
+[[nodiscard]] inline NonnegativeLeastSquares nonnegative_least_squares(const Eigen::MatrixXd& A,
+                                                                       const Eigen::VectorXd& b) {
+  require_finite(A, "A");
+  require_size(b, A.rows(), "b");
+  require_finite(b, "b");
+  const Eigen::Index n = A.cols();
+  NonnegativeLeastSquares out;
+  out.x = Eigen::VectorXd::Zero(n);
+  const double tolerance = 10.0 * std::numeric_limits<double>::epsilon() *
+                           std::max<Eigen::Index>(n, A.rows()) * std::max(1.0, A.norm()) *
+                           std::max(1.0, b.norm());
+  std::vector<bool> passive(static_cast<std::size_t>(n), false);
+  std::vector<Eigen::Index> set;
+  Eigen::VectorXd x = out.x;
+  const auto solve_passive = [&]() {
+    Eigen::MatrixXd Ap(A.rows(), static_cast<Eigen::Index>(set.size()));
+    for (std::size_t k = 0; k < set.size(); ++k)
+      Ap.col(static_cast<Eigen::Index>(k)) = A.col(set[k]);
+    const Eigen::VectorXd s = Ap.colPivHouseholderQr().solve(b);
+    Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
+    for (std::size_t k = 0; k < set.size(); ++k) z[set[k]] = s[static_cast<Eigen::Index>(k)];
+    return z;
+  };
+  const int max_iterations = 3 * static_cast<int>(std::max<Eigen::Index>(n, 1));
+  while (true) {
+    const Eigen::VectorXd w = A.transpose() * (b - A * x);
+    Eigen::Index best = -1;
+    for (Eigen::Index j = 0; j < n; ++j)
+      if (!passive[static_cast<std::size_t>(j)] && w[j] > tolerance && (best < 0 || w[j] > w[best]))
+        best = j;
+    if (best < 0) break;
+    if (out.iterations == max_iterations) {
+      out.converged = false;
+      break;
+    }
+    ++out.iterations;
+    passive[static_cast<std::size_t>(best)] = true;
+    set.push_back(best);
+    Eigen::VectorXd z = solve_passive();
+    // Step back towards x until no passive entry is negative, dropping those that reach 0.
+    for (int inner = 0; inner < max_iterations; ++inner) {
+      double alpha = 1.0;
+      bool negative = false;
+      for (const Eigen::Index j : set)
+        if (z[j] <= 0.0) {
+          negative = true;
+          alpha = std::min(alpha, x[j] / (x[j] - z[j]));
+        }
+      if (!negative) break;
+      x += alpha * (z - x);
+      std::erase_if(set, [&](Eigen::Index j) {
+        const bool drop = x[j] <= tolerance;
+        if (drop) {
+          passive[static_cast<std::size_t>(j)] = false;
+          x[j] = 0.0;
+        }
+        return drop;
+      });
+      z = set.empty() ? Eigen::VectorXd(Eigen::VectorXd::Zero(n)) : solve_passive();
+    }
+    x = z;
+  }
+  out.x = x.cwiseMax(0.0);
+  out.residual = (A * out.x - b).norm();
+  return out;
+}
+
+}  // namespace topograsp

@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file
+/// balance_hold(): the joint torques with which a closed hand holds its object so that the
+/// contact forces balance on it (grasp force optimisation over the contacts when closing ends).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <type_traits>
+
+#include <topograsp/core/nonnegative_least_squares.hpp>
+#include <topograsp/evaluation/hand_scene.hpp>
+#include <topograsp/kinematics/jacobian.hpp>
+
+namespace topograsp {
+
+/// The holding torques balance_hold() found.
+template <int NQ>
+struct HoldBalance {
+  /// Whether any contact of a link that a joint moves carries force (else torque is 0 and the
+  /// caller holds some other way).
+  bool found = false;
+  Vec<NQ> torque = Vec<NQ>::Zero();  ///< each motor's holding torque (N m, or N)
+  double squeeze = 0.0;              ///< the total normal force of the balanced contact forces (N)
+  /// |net wrench| / squeeze of the balanced forces (the torque divided by the contacts' largest
+  /// distance from the object's centre of mass): 0 when they balance exactly, near 1 when they
+  /// all push one way.
+  double imbalance = 0.0;
+  int contacts = 0;  ///< the contact points the forces were distributed over
+};
+
+/// The cone edges, the weight of the torques' evenness against the balance, and the rounds of
+/// reweighting of balance_hold().
+inline constexpr int k_hold_cone_edges = 8;
+inline constexpr double k_hold_evenness_weight = 0.01;
+inline constexpr int k_hold_rounds = 8;
+
+/// The torques with which the hand of \p scene, closed on its object, holds it with forces that
+/// balance on it, as a person adjusts the fingers' forces to hold an object still (grasp force
+/// optimisation: the classic force distribution problem of grasp analysis).
+/// Over the hand-object contacts of the last step (HandScene::hand_contact_list()), each a point
+/// contact with its pair's friction cone in k_hold_cone_edges edges, the contact forces f_i are
+/// the non-negative least-squares minimiser (nonnegative_least_squares()) of
+///   |sum f_i|^2 + |sum (p_i - c) x f_i / L|^2 + 100 (sum n_i.f_i - 1)^2
+///     + k_hold_evenness_weight sum_j w_j (tau_j / effort_j)^2,   tau = sum J_i' f_i,
+/// c the object's centre of mass, L the contacts' largest distance from it, J_i the point
+/// Jacobian of contact i's link, effort_j the joint's torque limit: forces of unit total
+/// squeeze, balanced as nearly as the contacts allow, spread over the joints in proportion to
+/// their strength (the palm, moved by no joint, carries what it is given for free). The torques
+/// are then scaled so that the most loaded joint gives \p hold_fraction of its limit. The weights
+/// w_j of the evenness term start at 1 and are reweighted k_hold_rounds times towards the joints
+/// that carry the most (Lawson's minimax iteration), which raises the squeeze the limits allow.
+/// A pair without friction has a cone of one edge, its normal.
+/// \throws topograsp::invalid_argument naming "hold_fraction" unless it is in (0, 1].
+template <const auto& M, class S>
+[[nodiscard]] HoldBalance<M.nq> balance_hold(const HandScene<M, S>& scene, double hold_fraction) {
+  constexpr int nq = M.nq;
+  if (!(hold_fraction > 0.0 && hold_fraction <= 1.0))
+    detail::throw_invalid_argument("hold_fraction", "expected a value in (0, 1]");
+  HoldBalance<nq> out;
+  const std::vector<HandContact> contacts = scene.hand_contact_list();
+  if (contacts.empty()) return out;
+  KinematicsData<M> kin;
+  forward_kinematics(kin, scene.joint_positions());
+  const Eigen::Isometry3d hand = scene.hand_pose();
+  const Mat3 R = hand.linear();
+  const Vec3 c = scene.object_com();
+  double length = 0.01;
+  for (const HandContact& k : contacts) length = std::max(length, (k.point - c).norm());
+  const auto m = static_cast<Eigen::Index>(contacts.size());
+  const Eigen::Index cols = m * k_hold_cone_edges;
+  constexpr double squeeze_weight = 10.0;
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(7 + nq, cols);
+  Eigen::MatrixXd torque_of = Eigen::MatrixXd::Zero(nq, cols);  // tau per unit of each edge
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const HandContact& k = contacts[static_cast<std::size_t>(i)];
+    const Vec3 n = k.normal.normalized();
+    const Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
+    const int link = M.find_link(k.link);
+    Mat<3, nq> J = Mat<3, nq>::Zero();
+    if (link >= 0) J = point_jacobian(kin, link, hand.inverse() * k.point);
+    for (int e = 0; e < k_hold_cone_edges; ++e) {
+      const double a = 2.0 * std::numbers::pi * e / k_hold_cone_edges;
+      const Vec3 f = n + k.friction * (std::cos(a) * t1 + std::sin(a) * t2);
+      const Eigen::Index col = i * k_hold_cone_edges + e;
+      A.block<3, 1>(0, col) = f;
+      A.block<3, 1>(3, col) = (k.point - c).cross(f) / length;
+      A(6, col) = squeeze_weight;
+      torque_of.col(col) = J.transpose() * (R.transpose() * f);
+    }
+  }
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(7 + nq);
+  b[6] = squeeze_weight;
+  // Lawson's reweighting towards the least largest load: each round weighs a joint's load by
+  // how near the largest it came in the last.
+  Vec<nq> weight = Vec<nq>::Ones();
+  NonnegativeLeastSquares solved;
+  for (int round = 0; round < k_hold_rounds; ++round) {
+    for (int j = 0; j < nq; ++j)
+      A.row(7 + j) =
+          std::sqrt(k_hold_evenness_weight * weight[j]) * torque_of.row(j) / M.joint_spec(j).effort;
+    solved = nonnegative_least_squares(A, b);
+    Vec<nq> load = Vec<nq>::Zero();
+    for (int j = 0; j < nq; ++j)
+      load[j] = std::abs(torque_of.row(j).dot(solved.x)) / M.joint_spec(j).effort;
+    const double total = weight.dot(load);
+    if (!(total > 0.0)) break;
+    weight = (weight.cwiseProduct(load) * (nq / total)).cwiseMax(1e-6);
+  }
+  const double squeeze = solved.x.sum();
+  if (!(squeeze > 0.0)) return out;
+  const Eigen::VectorXd x = solved.x / squeeze;  // unit total normal force
+  const Vec<nq> tau = torque_of * x;
+  double load = 0.0;  // the largest fraction of a joint's limit per newton of squeeze
+  for (int j = 0; j < nq; ++j) load = std::max(load, std::abs(tau[j]) / M.joint_spec(j).effort);
+  if (!(load > 0.0)) return out;
+  const double scale = hold_fraction / load;
+  out.found = true;
+  out.torque = scale * tau;
+  out.squeeze = scale;
+  out.imbalance = (A.topRows<6>() * x).norm();
+  out.contacts = static_cast<int>(m);
+  return out;
+}
+
+}  // namespace topograsp
