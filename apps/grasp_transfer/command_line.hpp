@@ -430,7 +430,8 @@ options:
                    ycb_mug, ycb_power_drill, ycb_hammer: docs/objects.md)
   --methods LIST   comma-separated methods, each once (default topological,transplant,fingertip,
                    virtual_finger; also the topological method's variants paper, paper_line,
-                   paper_approach, no_windings, nearest_point, closed_windings: docs/transfer.md)
+                   paper_approach, no_windings, nearest_point, closed_windings, and the
+                   controls no_plan and shuffled_windings: docs/transfer.md)
   --out DIR        the output folder (default grasp_transfer_out; see below)
   --force          write into DIR even if it is not empty and holds no earlier run
   --jobs N         worker threads, 1 to 1024 (default 1); if fewer threads can be started, the

@@ -13,6 +13,7 @@
 #include <exception>
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <thread>
@@ -141,6 +142,20 @@ struct ObjectResult {
                                                  int id) noexcept {
   return detail::splitmix64_mix(seed ^ detail::splitmix64_mix(detail::fnv1a_64(object)) ^
                                 (0xbf58476d1ce4e5b9ull * static_cast<std::uint64_t>(id + 1)));
+}
+
+/// The order in which grasp_transfer looks for the demonstration whose windings the
+/// shuffled-windings control of hypothesis \p id (of \p n of its object) aims at: id + n/2,
+/// id + n/2 + 1, ... modulo n, never id itself; the first whose human grasp reaches the object is
+/// taken (reached, not necessarily stable: its windings are those of a closed human hand around
+/// the object). Fixed in advance, the same in every shard. Empty for n < 2.
+[[nodiscard]] inline std::vector<int> shuffle_partner_order(int id, int n) {
+  std::vector<int> order;
+  for (int k = 0; k < n; ++k) {
+    const int j = (id + n / 2 + k) % n;
+    if (j != id) order.push_back(j);
+  }
+  return order;
 }
 
 namespace detail {
@@ -365,8 +380,34 @@ std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& o
         }
         std::vector<SdhTransfer>& t = transfers[static_cast<std::size_t>(k)];
         if (g.stable()) {
-          for (const TransferMethod m : options.methods)
-            t.push_back(transfer(m, object, g, transfer_options));
+          // The shuffled-windings control's other demonstration, made when first needed.
+          std::optional<HumanGrasp> partner;
+          bool sought = false;
+          const std::size_t object_index = oi;  // clang 14 captures no structured binding
+          const int grasp_id = id;
+          const auto find_partner = [&]() -> std::optional<HumanGrasp> {
+            GraspSimOptions sim = transfer_options.sim;
+            sim.second_judge_human = {};  // only its windings are used
+            const auto& own = recorded[object_index];
+            const int n = static_cast<int>(own.empty() ? hyps[object_index].size() : own.size());
+            for (const int j : shuffle_partner_order(grasp_id, n)) {
+              const auto u = static_cast<std::size_t>(j);
+              HumanGrasp p = own.empty() ? demonstrate(object, hyps[object_index][u], j, sim)
+                                         : demonstrate_recorded(object, own[u]->grasp, j, sim);
+              if (p.reached) return p;
+            }
+            return std::nullopt;
+          };
+          for (const TransferMethod m : options.methods) {
+            if (m != TransferMethod::shuffled_windings) {
+              t.push_back(transfer(m, object, g, transfer_options));
+              continue;
+            }
+            if (!sought) partner = find_partner();
+            sought = true;
+            t.push_back(
+                transfer_shuffled(object, g, partner ? &*partner : nullptr, transfer_options));
+          }
           ++stable_done;
         }
         if (on_done) {

@@ -62,17 +62,19 @@ void print_table(const Json& doc) {
     return "-";
   };
   const auto label = [](const std::string& m) -> std::string {
-    return m == "transplant"        ? "Autoclose (transplant)"
-           : m == "topological"     ? "Topological synergies"
-           : m == "fingertip"       ? "Fingertip mapping"
-           : m == "virtual_finger"  ? "Virtual-finger mapping"
-           : m == "paper"           ? "Topological, as in the paper"
-           : m == "paper_line"      ? "  paper + line task"
-           : m == "paper_approach"  ? "  paper + final approach"
-           : m == "no_windings"     ? "  topological, no windings"
-           : m == "nearest_point"   ? "  topological, nearest point"
-           : m == "closed_windings" ? "  topological, closed windings"
-                                    : m;
+    return m == "transplant"          ? "Autoclose (transplant)"
+           : m == "topological"       ? "Topological synergies"
+           : m == "fingertip"         ? "Fingertip mapping"
+           : m == "virtual_finger"    ? "Virtual-finger mapping"
+           : m == "paper"             ? "Topological, as in the paper"
+           : m == "paper_line"        ? "  paper + line task"
+           : m == "paper_approach"    ? "  paper + final approach"
+           : m == "no_windings"       ? "  topological, no windings"
+           : m == "nearest_point"     ? "  topological, nearest point"
+           : m == "closed_windings"   ? "  topological, closed windings"
+           : m == "no_plan"           ? "  control: no plan"
+           : m == "shuffled_windings" ? "  control: shuffled windings"
+                                      : m;
   };
   const auto header = [&](const std::string& title) {
     std::printf("\n%-44s", title.c_str());

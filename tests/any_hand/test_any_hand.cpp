@@ -300,6 +300,9 @@ TEST_CASE("transfer_hand: bad input is refused with a reason or an exception nam
   CHECK_THROWS_WITH(
       transfer_hand<models::allegro_hand>(TransferMethod::closed_windings, bottle, source_grasp(g)),
       Catch::StartsWith("method: ") && Catch::Contains("closed_windings"));
+  CHECK_THROWS_WITH(transfer_hand<models::allegro_hand>(TransferMethod::shuffled_windings, bottle,
+                                                        source_grasp(g)),
+                    Catch::StartsWith("method: ") && Catch::Contains("shuffled_windings"));
   // A fingertip fit whose targets are far out of the hand's reach (a scale that transfer_hand's
   // option check would refuse first) is not planned, not reported.
   TransferOptions far;

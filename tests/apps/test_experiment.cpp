@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -418,6 +419,52 @@ TEST_CASE("shards split the hypotheses without overlap", "[grasp][experiment]") 
     total += r[0].hypotheses;
   }
   CHECK(total == 4);
+}
+
+TEST_CASE("the shuffled-windings control's other demonstration is chosen by a fixed order",
+          "[grasp][experiment][controls]") {
+  // Halfway round the object's hypotheses, then on, never itself.
+  CHECK(shuffle_partner_order(0, 4) == std::vector<int>{2, 3, 1});
+  CHECK(shuffle_partner_order(3, 4) == std::vector<int>{1, 2, 0});
+  CHECK(shuffle_partner_order(1, 5) == std::vector<int>{3, 4, 0, 2});
+  CHECK(shuffle_partner_order(0, 2) == std::vector<int>{1});
+  CHECK(shuffle_partner_order(0, 1).empty());
+}
+
+TEST_CASE("in a run, the controls: no plan, and the windings of the first partner that reached",
+          "[grasp][experiment][controls][end_to_end]") {
+  // Each stable demonstration's shuffled transfer aims at the first partner in that order whose
+  // human grasp reached the object; its windings differ from the demonstration's own.
+  ExperimentOptions c = stable_options(2);
+  c.objects = {objects::hammer()};
+  c.methods = {TransferMethod::topological, TransferMethod::shuffled_windings,
+               TransferMethod::no_plan};
+  const std::vector<ObjectResult> r = run_experiment(c);
+  REQUIRE(r[0].stable_human() > 0);
+  const std::vector<GraspHypothesis> hyps = box_hypotheses(objects::hammer());
+  for (std::size_t k = 0; k < r[0].transferred_ids.size(); ++k) {
+    const int id = r[0].transferred_ids[k];
+    const SdhTransfer& own = r[0].transfers[0][k];
+    const SdhTransfer& shuffled = r[0].transfers[1][k];
+    const SdhTransfer& none = r[0].transfers[2][k];
+    INFO("demonstration " << id << ": " << shuffled.reason);
+    CHECK(shuffled.method == TransferMethod::shuffled_windings);
+    CHECK(none.method == TransferMethod::no_plan);
+    CHECK(none.sweeps == 0);
+    std::optional<HumanGrasp> partner;
+    for (const int j : shuffle_partner_order(id, static_cast<int>(hyps.size()))) {
+      HumanGrasp p = demonstrate(objects::hammer(), hyps[static_cast<std::size_t>(j)], j);
+      if (p.reached) {
+        partner = std::move(p);
+        break;
+      }
+    }
+    REQUIRE(partner.has_value());
+    REQUIRE(shuffled.source_winding.has_value());
+    REQUIRE(own.source_winding.has_value());
+    CHECK(shuffled.source_winding->isApprox(partner->descriptor.values));
+    CHECK_FALSE(shuffled.source_winding->isApprox(*own.source_winding));
+  }
 }
 
 TEST_CASE("the experiment warns of a recording the hand fits badly or cannot be placed at",

@@ -20,7 +20,7 @@ TEST_CASE("every transfer method is found by its name, and no other name",
   CHECK_THROWS_WITH(transfer_method("papers"),
                     Catch::StartsWith("method: unknown method \"papers\" (expected topological, "
                                       "transplant, fingertip, virtual_finger, paper,") &&
-                        Catch::EndsWith("nearest_point or closed_windings)"));
+                        Catch::EndsWith("closed_windings, no_plan or shuffled_windings)"));
 }
 
 TEST_CASE("each variant switches exactly its parts of the topological method",
@@ -38,9 +38,11 @@ TEST_CASE("each variant switches exactly its parts of the topological method",
   const auto windings_on = [](const TransferOptions& o) {
     return o.winding_precision_mid > 0.0 && o.winding_precision_end > 0.0;
   };
-  for (const TransferMethod m : {TransferMethod::topological, TransferMethod::transplant,
-                                 TransferMethod::fingertip, TransferMethod::virtual_finger}) {
+  for (const TransferMethod m :
+       {TransferMethod::topological, TransferMethod::transplant, TransferMethod::fingertip,
+        TransferMethod::virtual_finger, TransferMethod::shuffled_windings}) {
     const TransferOptions o = transfer_method_options(m, given);
+    CHECK(o.plan);
     CHECK(o.closing_corrections == 0);
     check_kept(o);
     CHECK(line_on(o));
@@ -74,6 +76,14 @@ TEST_CASE("each variant switches exactly its parts of the topological method",
   CHECK(closed.closing_corrections == 2);
   CHECK(line_on(closed));
   CHECK(windings_on(closed));
+  CHECK(closed.plan);
+  // The no-plan control: everything kept, only the plan skipped.
+  const TransferOptions no_plan = transfer_method_options(TransferMethod::no_plan, given);
+  check_kept(no_plan);
+  CHECK_FALSE(no_plan.plan);
+  CHECK(line_on(no_plan));
+  CHECK(windings_on(no_plan));
+  CHECK(no_plan.final_approach == given.final_approach);
 }
 
 TEST_CASE("a variant runs the topological planner with its options and says which it was",

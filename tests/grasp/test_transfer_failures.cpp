@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // A transfer method that cannot do its work says so (planned false, a reason), and never reports
-// another method's pose, or its own starting pose, as its result.
+// another method's pose as its result; a plan that makes no progress is judged at its start, as
+// the no-plan control is (issue 29), and the shuffled-windings control aims at another's windings.
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -89,7 +91,7 @@ TEST_CASE("a human grasp with NaN windings is refused, not planned toward",
   check_not_planned(r, TransferMethod::topological, "the human windings are not finite");
 }
 
-TEST_CASE("a fit or a plan that accepted no step is not reported as a transfer",
+TEST_CASE("a fit that accepted no step is not reported as a transfer",
           "[grasp][transfer][bad-input]") {
   const GraspObject hammer = objects::hammer();
   // No iteration of the fingertip fit: it never leaves the transplant pose it starts from, which
@@ -98,14 +100,63 @@ TEST_CASE("a fit or a plan that accepted no step is not reported as a transfer",
   options.fingertip_iterations = 0;
   check_not_planned(transfer_fingertip(hammer, hammer_grasp(), options), TransferMethod::fingertip,
                     "the fingertip fit accepted no step");
+}
+
+TEST_CASE("a plan that makes no progress is judged at its start, as the no-plan control is",
+          "[grasp][transfer][controls]") {
   // An AICO plan that accepts no sweep (one sweep allowed, and the first sweep only initialises)
-  // is the ready pose held still: not a topological transfer, whatever ended the plan.
+  // leaves the hand at the plan's start: it is moved on until contact, closed and judged there
+  // (issue 29: never counted unstable without a simulation), and the reason says so.
+  const GraspObject hammer = objects::hammer();
   TransferOptions one_sweep;
   one_sweep.aico.max_sweeps = 1;
-  const SdhTransfer r = transfer_topological(hammer, hammer_grasp(), one_sweep);
-  CHECK(std::none_of(r.sweep_log.begin(), r.sweep_log.end(),
+  const SdhTransfer stalled = transfer_topological(hammer, hammer_grasp(), one_sweep);
+  INFO(stalled.reason);
+  CHECK(std::none_of(stalled.sweep_log.begin(), stalled.sweep_log.end(),
                      [](const AicoSweepRecord& s) { return s.accepted; }));
-  // It ended on max_sweeps, not on non-finite values, and used to be simulated as the transfer.
-  check_not_planned(r, TransferMethod::topological, "the plan failed before any progress");
-  CHECK_THAT(r.reason, Catch::Contains("max_sweeps"));
+  CHECK(stalled.planned);
+  CHECK_THAT(stalled.reason, Catch::Contains("the plan made no progress (max_sweeps)") &&
+                                 Catch::Contains("judged at its start"));
+  CHECK(stalled.stability.shake().steps > 0);  // simulated
+  // The no-plan control does not plan and is judged at the same start: the same grasp.
+  const SdhTransfer none = transfer(TransferMethod::no_plan, hammer, hammer_grasp(), {});
+  INFO(none.reason);
+  CHECK(none.method == TransferMethod::no_plan);
+  CHECK(none.planned);
+  CHECK(none.sweeps == 0);
+  CHECK_THAT(none.reason, Catch::Contains("no plan"));
+  CHECK(none.hand_pose.isApprox(stalled.hand_pose, 1e-12));
+  CHECK(none.q_open.isApprox(stalled.q_open, 1e-12));
+  CHECK(none.stable() == stalled.stable());
+  // The topological method itself plans, and ends elsewhere.
+  const SdhTransfer planned = transfer_topological(hammer, hammer_grasp(), {});
+  CHECK(planned.sweeps > 1);
+  CHECK_FALSE(planned.hand_pose.isApprox(none.hand_pose, 1e-6));
+}
+
+TEST_CASE("the shuffled-windings control aims the plan at another demonstration's windings",
+          "[grasp][transfer][controls]") {
+  const GraspObject hammer = objects::hammer();
+  const HumanGrasp& g = hammer_grasp();
+  // Another demonstration of the hammer whose windings differ from g's.
+  const std::vector<GraspHypothesis> hyps = box_hypotheses(hammer);
+  const HumanGrasp other = demonstrate(hammer, hyps[40], 40);
+  REQUIRE(other.reached);
+  REQUIRE((other.descriptor.values - g.descriptor.values).norm() > 0.1);
+  const SdhTransfer r = transfer_shuffled(hammer, g, &other, {});
+  INFO(r.reason);
+  CHECK(r.method == TransferMethod::shuffled_windings);
+  REQUIRE(r.source_winding.has_value());
+  CHECK(r.source_winding->isApprox(other.descriptor.values));
+  // From the same start as the topological transfer of g (its grasp frame), toward other targets.
+  const SdhTransfer own = transfer_topological(hammer, g, {});
+  REQUIRE(own.source_winding.has_value());
+  CHECK(own.source_winding->isApprox(g.descriptor.values));
+  // Without another demonstration that reached the object: not planned, and it says why.
+  check_not_planned(transfer_shuffled(hammer, g, nullptr, {}), TransferMethod::shuffled_windings,
+                    "no other demonstration reached the object");
+  HumanGrasp missed = other;
+  missed.reached = false;
+  check_not_planned(transfer_shuffled(hammer, g, &missed, {}), TransferMethod::shuffled_windings,
+                    "no other demonstration reached the object");
 }

@@ -53,7 +53,11 @@ enum class WindingReference : std::uint8_t {
 ///   the human's grasp centre;
 /// - closed_windings: topograsp's method with the winding targets corrected for the closing
 ///   (TransferOptions::closing_corrections = 2), so that the windings after the fingers close,
-///   not before, are the human's.
+///   not before, are the human's;
+/// - no_plan (a control): no plan at all, the hand judged at the plan's start (moved on until
+///   contact and closed as every variant is; TransferOptions::plan false);
+/// - shuffled_windings (a control): topograsp's method aimed at another demonstration's windings
+///   (the caller gives the grasp with them: with_windings_of(), grasp_transfer's partner rule).
 enum class TransferMethod : std::uint8_t {
   topological,
   transplant,
@@ -64,18 +68,23 @@ enum class TransferMethod : std::uint8_t {
   no_windings,
   nearest_point,
   virtual_finger,
-  closed_windings
+  closed_windings,
+  no_plan,
+  shuffled_windings
 };
 
 /// Every transfer method, in the order --help lists them.
-inline constexpr std::array<TransferMethod, 10> all_transfer_methods{
-    TransferMethod::topological,    TransferMethod::transplant,  TransferMethod::fingertip,
-    TransferMethod::virtual_finger, TransferMethod::paper,       TransferMethod::paper_line,
-    TransferMethod::paper_approach, TransferMethod::no_windings, TransferMethod::nearest_point,
-    TransferMethod::closed_windings};
+inline constexpr std::array<TransferMethod, 12> all_transfer_methods{
+    TransferMethod::topological,    TransferMethod::transplant,
+    TransferMethod::fingertip,      TransferMethod::virtual_finger,
+    TransferMethod::paper,          TransferMethod::paper_line,
+    TransferMethod::paper_approach, TransferMethod::no_windings,
+    TransferMethod::nearest_point,  TransferMethod::closed_windings,
+    TransferMethod::no_plan,        TransferMethod::shuffled_windings};
 
 /// The name of \p m ("topological", "transplant", "fingertip", "virtual_finger", "paper",
-/// "paper_line", "paper_approach", "no_windings", "nearest_point", "closed_windings").
+/// "paper_line", "paper_approach", "no_windings", "nearest_point", "closed_windings", "no_plan",
+/// "shuffled_windings").
 [[nodiscard]] constexpr std::string_view to_string(TransferMethod m) noexcept {
   switch (m) {
     case TransferMethod::topological:
@@ -98,6 +107,10 @@ inline constexpr std::array<TransferMethod, 10> all_transfer_methods{
       return "virtual_finger";
     case TransferMethod::closed_windings:
       return "closed_windings";
+    case TransferMethod::no_plan:
+      return "no_plan";
+    case TransferMethod::shuffled_windings:
+      return "shuffled_windings";
   }
   return "unknown";
 }

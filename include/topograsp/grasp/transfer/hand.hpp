@@ -18,11 +18,12 @@
 namespace topograsp {
 
 /// The methods transfer_hand() runs: every method of the fair experiment but closed_windings
-/// (its closing corrections run on the arm: transfer_hand_on_arm, transfer()): the topological
-/// method, its named variants (paper, paper_line, paper_approach, no_windings, nearest_point), and
-/// the transplant, fingertip and virtual-finger baselines.
+/// (its closing corrections run on the arm: transfer_hand_on_arm, transfer()) and
+/// shuffled_windings (it needs another demonstration: transfer_shuffled()): the topological
+/// method, its named variants (paper, paper_line, paper_approach, no_windings, nearest_point),
+/// the no_plan control, and the transplant, fingertip and virtual-finger baselines.
 [[nodiscard]] constexpr bool any_hand_method(TransferMethod m) noexcept {
-  return m != TransferMethod::closed_windings;
+  return m != TransferMethod::closed_windings && m != TransferMethod::shuffled_windings;
 }
 
 namespace detail {
@@ -100,7 +101,8 @@ template <const auto& Target, const auto& Source>
                                                  const SecondJudge<Target>& second = {}) {
   if (!any_hand_method(method))
     detail::throw_invalid_argument("method",
-                                   "transfer_hand runs every method but closed_windings; " +
+                                   "transfer_hand runs every method but closed_windings and "
+                                   "shuffled_windings; " +
                                        std::string(to_string(method)) +
                                        " runs on the arm (transfer_hand_on_arm, transfer())");
   validate_transfer_parameters(given);

@@ -59,6 +59,9 @@ struct TransferOptions {
   /// plan is made again, this many times; the plan whose closed windings are nearest the human's
   /// is kept. Each costs a plan and a closing.
   int closing_corrections = 0;
+  /// Whether the topological method plans. False (the no_plan control): no AICO solve, the hand
+  /// is judged at the plan's start, moved on until contact and closed as a plan's end is.
+  bool plan = true;
   /// Least-squares iterations of the fingertip mapping.
   int fingertip_iterations = 100;
   /// Weight of the fingertip fit's pull toward the transplant pose and the pre-shape, per m^2 or
@@ -139,8 +142,9 @@ inline void validate_transfer_parameters(const TransferOptions& options) {
 /// method switches the line task and the final approach off (line_precision_mid/_end and
 /// final_approach 0), paper_line only the final approach, paper_approach only the line task;
 /// no_windings sets both winding precisions to 0; nearest_point the nearest-point winding
-/// reference; closed_windings two closing corrections. topological and the other methods take
-/// \p options as given.
+/// reference; closed_windings two closing corrections; no_plan no plan (plan false).
+/// topological, shuffled_windings (whose difference is the grasp it is given) and the other
+/// methods take \p options as given.
 [[nodiscard]] inline TransferOptions transfer_method_options(TransferMethod method,
                                                              TransferOptions options) {
   const bool no_line = method == TransferMethod::paper || method == TransferMethod::paper_approach;
@@ -152,6 +156,7 @@ inline void validate_transfer_parameters(const TransferOptions& options) {
   if (method == TransferMethod::nearest_point)
     options.winding_reference = WindingReference::nearest_point;
   if (method == TransferMethod::closed_windings) options.closing_corrections = 2;
+  if (method == TransferMethod::no_plan) options.plan = false;
   return options;
 }
 

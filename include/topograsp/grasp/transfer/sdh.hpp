@@ -158,4 +158,25 @@ template <class = void>
   return r;
 }
 
+/// The shuffled-windings control on the SDH: topograsp's method on the human grasp \p g (its
+/// grasp frame, approach and start) aimed at \p other's windings (its descriptor around the
+/// object's centre of mass) instead of g's, so that what the windings add is measured apart from
+/// the rest of the plan. Not planned (reason says why) when \p other is null or did not reach the
+/// object; grasp_transfer's rule for choosing it: docs/transfer.md, "Controls".
+template <class = void>
+[[nodiscard]] SdhTransfer transfer_shuffled(const GraspObject& object, const HumanGrasp& g,
+                                            const HumanGrasp* other,
+                                            const TransferOptions& options) {
+  if (other == nullptr || !other->reached) {
+    detail::TransferRun<models::schunk_sdh> run(
+        TransferMethod::shuffled_windings,
+        "no other demonstration reached the object to take windings from");
+    return run.unplanned();
+  }
+  HumanGrasp aimed = g;
+  aimed.descriptor = other->descriptor;
+  aimed.windings = other->windings;
+  return transfer(TransferMethod::shuffled_windings, object, aimed, options);
+}
+
 }  // namespace topograsp

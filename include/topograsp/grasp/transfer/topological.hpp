@@ -96,8 +96,7 @@ namespace detail {
 // Solves nothing: records the solved \p plan of \p problem (whose first task is the winding task)
 // into \p out: its sweeps, its termination as the reason, the windings of each step and their
 // targets. False, and the reason says so, if the plan accepted no sweep (whatever ended it:
-// non-finite values, too many rejections): the start held still is no work of the method; it is
-// reported, never the start pose.
+// non-finite values, too many rejections): the caller then judges the plan's start.
 template <class Problem, class Plan, class Out>
 bool record_plan(const Problem& problem, const Plan& plan, Out& out) {
   out.sweeps = plan.sweeps;
@@ -114,7 +113,7 @@ bool record_plan(const Problem& problem, const Plan& plan, Out& out) {
   }
   const bool moved = std::any_of(plan.sweep_log.begin(), plan.sweep_log.end(),
                                  [](const AicoSweepRecord& s) { return s.accepted; });
-  if (!moved) out.reason = "the plan failed before any progress (" + out.reason + ")";
+  if (!moved) out.reason = "the plan made no progress (" + out.reason + "): judged at its start";
   return moved;
 }
 
@@ -138,8 +137,10 @@ struct TopologicalStart {
 // without its base, moves on until contact (at most options.final_approach), closes until contact
 // and is judged (with second if set). With options.closing_corrections the targets are corrected by
 // the windings that closing leaves and the plan made again (the plan whose closed windings come
-// nearest y is kept). Not planned when the plan makes no progress or the planned hand cannot be
-// placed; r.reason keeps the planner's termination otherwise.
+// nearest y is kept). A plan that makes no progress, and the no_plan control (options.plan
+// false), leave the hand at the plan's start, judged as a plan's end is (every variant alike:
+// never counted unstable without a simulation); r.reason says so. Not planned when the hand
+// cannot be placed; r.reason keeps the planner's termination otherwise.
 template <const auto& M, const auto& A>
 HandTransfer<M> topological_plan(const GraspObject& object, const TopologicalStart<A>& start,
                                  const Vec<hand_curve_count<M>>& y, const Vec3& reference,
@@ -152,17 +153,22 @@ HandTransfer<M> topological_plan(const GraspObject& object, const TopologicalSta
   // One plan toward the winding targets `target`: fills out's plan records, and its hand_pose and
   // q_open with the placed hand; false (out.reason says why) if it cannot be placed.
   const auto plan_for = [&](const Vec<K>& target, HandTransfer<M>& out) {
-    AicoProblem<A, TopologicalTasks<A>> problem(
-        topological_tasks<M, A>(object, start.world_object, target, reference, start.grasp_point,
-                                start.approach, d, options, start.axis_target),
-        start.q0, options.aico);
-    AicoWorkspace ws(problem);
-    const AicoResult<A.nq> plan = solve(problem, ws);
-    if (!record_plan(problem, plan, out)) return false;
+    Vec<A.nq> q_end = start.q0;
+    if (options.plan) {
+      AicoProblem<A, TopologicalTasks<A>> problem(
+          topological_tasks<M, A>(object, start.world_object, target, reference, start.grasp_point,
+                                  start.approach, d, options, start.axis_target),
+          start.q0, options.aico);
+      AicoWorkspace ws(problem);
+      const AicoResult<A.nq> plan = solve(problem, ws);
+      if (record_plan(problem, plan, out)) q_end = plan.q.back();
+    } else {
+      out.reason = "no plan (the no_plan control): judged at its start";
+    }
     KinematicsData<A> d_end;
-    forward_kinematics(d_end, plan.q.back());
+    forward_kinematics(d_end, q_end);
     const Eigen::Isometry3d root = start.world_object.inverse() * link_pose(d_end, root_link);
-    const Vec<M.nq> q_hand = clamp_to_limits<M>(Vec<M.nq>(plan.q.back().template tail<M.nq>()));
+    const Vec<M.nq> q_hand = clamp_to_limits<M>(Vec<M.nq>(q_end.template tail<M.nq>()));
     const Vec3 along =
         start.along_source ? start.approach : Vec3(root.linear() * grasp_approach<M>(q_hand));
     std::string why;
