@@ -89,10 +89,12 @@ HandTransfer<Target> topological_from_source(TransferMethod method, const GraspO
 ///   approach until contact (at most final_approach), closes until contact and is judged.
 /// Every result is judged by the stability suite in the built-in stepper and by \p second if set.
 ///
-/// A source grasp that is not finite, a plan that makes no progress, or a hand that cannot be
-/// placed clear of the object gives an unplanned result (planned false) whose reason says why.
+/// A source grasp that is not finite, or a hand that cannot be placed clear of the object, gives
+/// an unplanned result (planned false) whose reason says why; a plan that makes no progress is
+/// judged at its start, and its reason says so.
 /// \throws topograsp::invalid_argument naming "method" for closed_windings (on the arm only:
-/// transfer_hand_on_arm, transfer()), and as validate_transfer_parameters for options out of range.
+/// transfer_hand_on_arm, transfer()) and shuffled_windings (transfer_shuffled()), and as
+/// validate_transfer_parameters for options out of range.
 template <const auto& Target, const auto& Source>
   requires HandModel<decltype(Target)> && HandModel<decltype(Source)>
 [[nodiscard]] HandTransfer<Target> transfer_hand(TransferMethod method, const GraspObject& object,
