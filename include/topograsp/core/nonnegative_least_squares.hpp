@@ -6,11 +6,10 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
-
-#include <Eigen/QR>
 
 #include <topograsp/core/eigen.hpp>
 #include <topograsp/core/error.hpp>
@@ -29,12 +28,14 @@ struct NonnegativeLeastSquares {
 /// used would lower the residual (its entry of the gradient A'(b - A x) is above a tolerance
 /// scaled by |A| |b|), it joins the passive set and x is the unconstrained least-squares
 /// solution over that set, stepped back to the bound (dropping the columns that reach 0) where
-/// an entry would turn negative. Exact for problems of a few hundred columns (each iteration
-/// one QR of the passive columns); stops after 3 x columns iterations (converged = false).
+/// an entry would turn negative. For problems of a few hundred columns (each iteration one
+/// Cholesky factorisation of the passive columns' normal equations); stops after 3 x columns
+/// iterations (converged = false).
 /// \throws topograsp::invalid_argument naming "A" or "b" for non-finite entries, or "b" when its
 /// size differs from A's rows.
-[[nodiscard]] inline NonnegativeLeastSquares nonnegative_least_squares(const Eigen::MatrixXd& A,
-                                                                       const Eigen::VectorXd& b) {
+template <class = void>
+[[nodiscard]] NonnegativeLeastSquares nonnegative_least_squares(const Eigen::MatrixXd& A,
+                                                                const Eigen::VectorXd& b) {
   require_finite(A, "A");
   require_size(b, A.rows(), "b");
   require_finite(b, "b");
@@ -47,18 +48,52 @@ struct NonnegativeLeastSquares {
   std::vector<bool> passive(static_cast<std::size_t>(n), false);
   std::vector<Eigen::Index> set;
   Eigen::VectorXd x = out.x;
+  // The least-squares solution over the passive columns: their normal equations (few: at most
+  // A's rows are ever passive at once, and they stay linearly independent) solved by a plain
+  // Cholesky factorisation, regularised by a relative 1e-12 on the diagonal. Scalar loops on
+  // purpose: Eigen's blocked products, LDLT and QR cost a user's translation unit seconds to
+  // compile, for matrices of a few dozen entries.
+  Eigen::MatrixXd gram;
+  Eigen::VectorXd rhs;
   const auto solve_passive = [&]() {
-    Eigen::MatrixXd Ap(A.rows(), static_cast<Eigen::Index>(set.size()));
-    for (std::size_t k = 0; k < set.size(); ++k)
-      Ap.col(static_cast<Eigen::Index>(k)) = A.col(set[k]);
-    const Eigen::VectorXd s = Ap.colPivHouseholderQr().solve(b);
+    const auto p = static_cast<Eigen::Index>(set.size());
+    gram.resize(p, p);
+    rhs.resize(p);
+    for (Eigen::Index i = 0; i < p; ++i) {
+      rhs[i] = A.col(set[static_cast<std::size_t>(i)]).dot(b);
+      for (Eigen::Index j = 0; j <= i; ++j)
+        gram(i, j) =
+            A.col(set[static_cast<std::size_t>(i)]).dot(A.col(set[static_cast<std::size_t>(j)]));
+    }
+    for (Eigen::Index i = 0; i < p; ++i) gram(i, i) *= 1.0 + 1e-12;
+    // Cholesky in place (lower triangle), then forward and back substitution.
+    for (Eigen::Index j = 0; j < p; ++j) {
+      double d = gram(j, j);
+      for (Eigen::Index k = 0; k < j; ++k) d -= gram(j, k) * gram(j, k);
+      d = std::sqrt(std::max(d, std::numeric_limits<double>::min()));
+      gram(j, j) = d;
+      for (Eigen::Index i = j + 1; i < p; ++i) {
+        double v = gram(i, j);
+        for (Eigen::Index k = 0; k < j; ++k) v -= gram(i, k) * gram(j, k);
+        gram(i, j) = v / d;
+      }
+    }
+    for (Eigen::Index i = 0; i < p; ++i) {
+      for (Eigen::Index k = 0; k < i; ++k) rhs[i] -= gram(i, k) * rhs[k];
+      rhs[i] /= gram(i, i);
+    }
+    for (Eigen::Index i = p - 1; i >= 0; --i) {
+      for (Eigen::Index k = i + 1; k < p; ++k) rhs[i] -= gram(k, i) * rhs[k];
+      rhs[i] /= gram(i, i);
+    }
     Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
-    for (std::size_t k = 0; k < set.size(); ++k) z[set[k]] = s[static_cast<Eigen::Index>(k)];
+    for (Eigen::Index i = 0; i < p; ++i) z[set[static_cast<std::size_t>(i)]] = rhs[i];
     return z;
   };
   const int max_iterations = 3 * static_cast<int>(std::max<Eigen::Index>(n, 1));
   while (true) {
-    const Eigen::VectorXd w = A.transpose() * (b - A * x);
+    const Eigen::VectorXd r = b - A.lazyProduct(x);
+    const Eigen::VectorXd w = A.transpose().lazyProduct(r);
     Eigen::Index best = -1;
     for (Eigen::Index j = 0; j < n; ++j)
       if (!passive[static_cast<std::size_t>(j)] && w[j] > tolerance && (best < 0 || w[j] > w[best]))
@@ -96,7 +131,7 @@ struct NonnegativeLeastSquares {
     x = z;
   }
   out.x = x.cwiseMax(0.0);
-  out.residual = (A * out.x - b).norm();
+  out.residual = (A.lazyProduct(out.x) - b).norm();
   return out;
 }
 

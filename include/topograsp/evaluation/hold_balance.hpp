@@ -53,6 +53,56 @@ inline constexpr int k_hold_rounds = 8;
 /// that carry the most (Lawson's minimax iteration), which raises the squeeze the limits allow.
 /// A pair without friction has a cone of one edge, its normal.
 /// \throws topograsp::invalid_argument naming "hold_fraction" unless it is in (0, 1].
+namespace detail {
+
+// What solve_hold_balance() found: per unit of total normal force, the joints' torques, and the
+// net wrench's norm; ok false when no force could be found.
+struct UnitHoldBalance {
+  bool ok = false;
+  Eigen::VectorXd torque;  // per joint, for a total normal force of 1 N
+  double imbalance = 0.0;
+};
+
+// The model-independent part of balance_hold() (compiled once per translation unit, whatever the
+// hands): wrench (6 x edges: each cone edge's force and torque / L on the object), torque_of
+// (joints x edges: the joint torques per unit of each edge) and effort (the joints' limits).
+template <class = void>
+UnitHoldBalance solve_hold_balance(const Eigen::MatrixXd& wrench, const Eigen::MatrixXd& torque_of,
+                                   const Eigen::VectorXd& effort) {
+  constexpr double squeeze_weight = 10.0;
+  const Eigen::Index nq = torque_of.rows(), cols = wrench.cols();
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(7 + nq, cols);
+  A.topRows(6) = wrench;
+  A.row(6).setConstant(squeeze_weight);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(7 + nq);
+  b[6] = squeeze_weight;
+  // Lawson's reweighting towards the least largest load: each round weighs a joint's load by
+  // how near the largest it came in the last.
+  Eigen::VectorXd weight = Eigen::VectorXd::Ones(nq);
+  NonnegativeLeastSquares solved;
+  for (int round = 0; round < k_hold_rounds; ++round) {
+    for (Eigen::Index j = 0; j < nq; ++j)
+      A.row(7 + j) = std::sqrt(k_hold_evenness_weight * weight[j]) * torque_of.row(j) / effort[j];
+    solved = nonnegative_least_squares(A, b);
+    Eigen::VectorXd load(nq);
+    for (Eigen::Index j = 0; j < nq; ++j)
+      load[j] = std::abs(torque_of.row(j).dot(solved.x)) / effort[j];
+    const double total = weight.dot(load);
+    if (!(total > 0.0)) break;
+    weight = (weight.cwiseProduct(load) * (static_cast<double>(nq) / total)).cwiseMax(1e-6);
+  }
+  UnitHoldBalance out;
+  const double squeeze = solved.x.sum();
+  if (!(squeeze > 0.0)) return out;
+  const Eigen::VectorXd x = solved.x / squeeze;  // unit total normal force
+  out.ok = true;
+  out.torque = torque_of.lazyProduct(x);
+  out.imbalance = wrench.lazyProduct(x).norm();
+  return out;
+}
+
+}  // namespace detail
+
 template <const auto& M, class S>
 [[nodiscard]] HoldBalance<M.nq> balance_hold(const HandScene<M, S>& scene, double hold_fraction) {
   constexpr int nq = M.nq;
@@ -69,10 +119,7 @@ template <const auto& M, class S>
   double length = 0.01;
   for (const HandContact& k : contacts) length = std::max(length, (k.point - c).norm());
   const auto m = static_cast<Eigen::Index>(contacts.size());
-  const Eigen::Index cols = m * k_hold_cone_edges;
-  constexpr double squeeze_weight = 10.0;
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(7 + nq, cols);
-  Eigen::MatrixXd torque_of = Eigen::MatrixXd::Zero(nq, cols);  // tau per unit of each edge
+  Eigen::MatrixXd wrench(6, m * k_hold_cone_edges), torque_of(nq, m * k_hold_cone_edges);
   for (Eigen::Index i = 0; i < m; ++i) {
     const HandContact& k = contacts[static_cast<std::size_t>(i)];
     const Vec3 n = k.normal.normalized();
@@ -84,42 +131,23 @@ template <const auto& M, class S>
       const double a = 2.0 * std::numbers::pi * e / k_hold_cone_edges;
       const Vec3 f = n + k.friction * (std::cos(a) * t1 + std::sin(a) * t2);
       const Eigen::Index col = i * k_hold_cone_edges + e;
-      A.block<3, 1>(0, col) = f;
-      A.block<3, 1>(3, col) = (k.point - c).cross(f) / length;
-      A(6, col) = squeeze_weight;
+      wrench.block<3, 1>(0, col) = f;
+      wrench.block<3, 1>(3, col) = (k.point - c).cross(f) / length;
       torque_of.col(col) = J.transpose() * (R.transpose() * f);
     }
   }
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(7 + nq);
-  b[6] = squeeze_weight;
-  // Lawson's reweighting towards the least largest load: each round weighs a joint's load by
-  // how near the largest it came in the last.
-  Vec<nq> weight = Vec<nq>::Ones();
-  NonnegativeLeastSquares solved;
-  for (int round = 0; round < k_hold_rounds; ++round) {
-    for (int j = 0; j < nq; ++j)
-      A.row(7 + j) =
-          std::sqrt(k_hold_evenness_weight * weight[j]) * torque_of.row(j) / M.joint_spec(j).effort;
-    solved = nonnegative_least_squares(A, b);
-    Vec<nq> load = Vec<nq>::Zero();
-    for (int j = 0; j < nq; ++j)
-      load[j] = std::abs(torque_of.row(j).dot(solved.x)) / M.joint_spec(j).effort;
-    const double total = weight.dot(load);
-    if (!(total > 0.0)) break;
-    weight = (weight.cwiseProduct(load) * (nq / total)).cwiseMax(1e-6);
-  }
-  const double squeeze = solved.x.sum();
-  if (!(squeeze > 0.0)) return out;
-  const Eigen::VectorXd x = solved.x / squeeze;  // unit total normal force
-  const Vec<nq> tau = torque_of * x;
+  Eigen::VectorXd effort(nq);
+  for (int j = 0; j < nq; ++j) effort[j] = M.joint_spec(j).effort;
+  const detail::UnitHoldBalance unit = detail::solve_hold_balance(wrench, torque_of, effort);
+  if (!unit.ok) return out;
   double load = 0.0;  // the largest fraction of a joint's limit per newton of squeeze
-  for (int j = 0; j < nq; ++j) load = std::max(load, std::abs(tau[j]) / M.joint_spec(j).effort);
+  for (int j = 0; j < nq; ++j) load = std::max(load, std::abs(unit.torque[j]) / effort[j]);
   if (!(load > 0.0)) return out;
   const double scale = hold_fraction / load;
   out.found = true;
-  out.torque = scale * tau;
+  out.torque = scale * Vec<nq>(unit.torque);
   out.squeeze = scale;
-  out.imbalance = (A.topRows<6>() * x).norm();
+  out.imbalance = unit.imbalance;
   out.contacts = static_cast<int>(m);
   return out;
 }
