@@ -42,6 +42,10 @@ template <class = void>
   const Eigen::Index n = A.cols();
   NonnegativeLeastSquares out;
   out.x = Eigen::VectorXd::Zero(n);
+  if (n == 0 || A.rows() == 0) {  // nothing to choose (and no block of an empty matrix to take)
+    out.residual = b.norm();
+    return out;
+  }
   const double tolerance = 10.0 * std::numeric_limits<double>::epsilon() *
                            std::max<Eigen::Index>(n, A.rows()) * std::max(1.0, A.norm()) *
                            std::max(1.0, b.norm());
