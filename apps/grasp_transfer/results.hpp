@@ -50,10 +50,8 @@ template <const auto& M>
     detail::throw_invalid_argument(
         "hold_torque",
         "expected " + std::to_string(M.nq) + " torques, got " + std::to_string(hold_torque.size()));
-  Vec<M.nq> load;
-  for (int i = 0; i < M.nq; ++i)
-    load[i] = hold_torque[static_cast<std::size_t>(i)] / M.joint_spec(i).effort;
-  scene.set_joint_targets(hold_targets(scene, q, load));
+  scene.set_joint_targets(
+      hold_targets(scene, q, hold_loads<M>(Eigen::Map<const Vec<M.nq>>(hold_torque.data(), M.nq))));
   return to_mjcf(scene);
 }
 

@@ -154,6 +154,15 @@ template <const auto& M>
   return closing_directions<M>() * hold_fraction;
 }
 
+/// The holding loads of the torques \p torque (N m, or N; CloseResult::hold_torque): each joint's
+/// torque as a signed fraction of its limit (LinkSpec::effort), the loads hold_targets() takes.
+template <const auto& M>
+[[nodiscard]] Vec<M.nq> hold_loads(const Vec<M.nq>& torque) noexcept {
+  Vec<M.nq> load;
+  for (int i = 0; i < M.nq; ++i) load[i] = torque[i] / M.joint_spec(i).effort;
+  return load;
+}
+
 /// The targets with which a hand at \p q holds with \p load (per joint, the signed fraction of
 /// its torque limit it presses with): each joint's servo target that fraction of its servo's
 /// reach (HandScene::servo_reach()) from where it stands, so that it presses with that torque
@@ -337,7 +346,7 @@ CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options
   if (options.balanced_hold && result.status == Status::success) {
     const HoldBalance<nq> balance = balance_hold(scene, options.hold_fraction);
     if (balance.found) {
-      for (int i = 0; i < nq; ++i) load[i] = balance.torque[i] / M.joint_spec(i).effort;
+      load = hold_loads<M>(balance.torque);
       result.balanced = true;
       result.hold_imbalance = balance.imbalance;
       scene.set_effort_fraction(1.0);
