@@ -208,7 +208,7 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
   }
   std::string_view objects_list = "hammer,bottle";
   std::string demonstration_objects;  // the recordings' objects, with --demonstrations
-  std::string_view methods_list = "topological,transplant,fingertip,virtual_finger";
+  std::string_view methods_list = "topological,autoclose,transplant,fingertip,virtual_finger";
   std::vector<std::string_view> seen;  // value options given so far
   std::vector<std::string_view> set_names;
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -428,10 +428,10 @@ options:
                    ball, can, and the YCB objects ycb_cracker_box, ycb_sugar_box,
                    ycb_tomato_soup_can, ycb_mustard_bottle, ycb_banana, ycb_bleach_cleanser,
                    ycb_mug, ycb_power_drill, ycb_hammer: docs/objects.md)
-  --methods LIST   comma-separated methods, each once (default topological,transplant,fingertip,
-                   virtual_finger; also the topological method's variants paper, paper_line,
-                   paper_approach, no_windings, nearest_point, closed_windings, and the
-                   controls no_plan and shuffled_windings: docs/transfer.md)
+  --methods LIST   comma-separated methods, each once (default topological,autoclose,transplant,
+                   fingertip,virtual_finger; also the topological method's variants paper,
+                   paper_line, paper_approach, no_windings, nearest_point, closed_windings, and
+                   the controls no_plan and shuffled_windings: docs/transfer.md)
   --out DIR        the output folder (default grasp_transfer_out; see below)
   --force          write into DIR even if it is not empty and holds no earlier run
   --jobs N         worker threads, 1 to 1024 (default 1); if fewer threads can be started, the

@@ -62,7 +62,8 @@ void print_table(const Json& doc) {
     return "-";
   };
   const auto label = [](const std::string& m) -> std::string {
-    return m == "transplant"          ? "Autoclose (transplant)"
+    return m == "autoclose"           ? "Autoclose (the paper's baseline)"
+           : m == "transplant"        ? "Transplant (fair, opened)"
            : m == "topological"       ? "Topological synergies"
            : m == "fingertip"         ? "Fingertip mapping"
            : m == "virtual_finger"    ? "Virtual-finger mapping"
@@ -116,7 +117,7 @@ void print_table(const Json& doc) {
     return "- | " + (m.is_null() ? std::string("-") : std::string(buf));
   });
   for (const std::string& m : methods) {
-    const int paper_row = m == "transplant" ? 2 : m == "topological" || m == "paper" ? 3 : -1;
+    const int paper_row = m == "autoclose" ? 2 : m == "topological" || m == "paper" ? 3 : -1;
     row(label(m), [&](const Json& o) {
       const Json& s = summary(o, m);
       return (paper_row >= 0 ? paper(o.at("name").as_string(), paper_row) : "-") + " | " +
@@ -151,7 +152,9 @@ void print_table(const Json& doc) {
       methods.size() < 2)
     return;
   header("Against topological, same grasps:");
-  std::printf("(held by this method only | by topological only, McNemar's exact p)\n");
+  std::printf(
+      "(held by this method only | by topological only, McNemar's exact p, the test's "
+      "power to tell 15 points apart)\n");
   for (const std::string& m : methods) {
     if (m == "topological") continue;
     for (const char* key :
@@ -165,8 +168,9 @@ void print_table(const Json& doc) {
         const Json& c = summary(o, m).at(key);
         if (c.is_null()) return std::string("-");
         char buf[48];
-        std::snprintf(buf, sizeof buf, "%s | %s, p = %.2g", c.at("only_this").dump(0).c_str(),
-                      c.at("only_against").dump(0).c_str(), c.at("p_value").as_number());
+        std::snprintf(buf, sizeof buf, "%s | %s, p %.2g, power %.2f",
+                      c.at("only_this").dump(0).c_str(), c.at("only_against").dump(0).c_str(),
+                      c.at("p_value").as_number(), c.at("power_15").as_number());
         return std::string(buf);
       });
     }

@@ -112,8 +112,12 @@ inline Json stability_summary(const std::vector<const Json*>& records) {
   return s;
 }
 
+// The difference in success rate whose power every paired comparison reports (power_15).
+inline constexpr double k_power_difference = 0.15;
+
 // A method's records against the topological method's on the same grasps (both in id order):
-// McNemar's exact test of the verdicts of the deciding engine or (\p second) the second judge.
+// McNemar's exact test of the verdicts of the deciding engine or (\p second) the second judge,
+// and its power to tell 15 points apart (mcnemar_exact_power).
 inline Json paired_summary(const std::vector<const Json*>& records,
                            const std::vector<const Json*>& topological, bool second) {
   if (records.size() != topological.size())
@@ -138,6 +142,13 @@ inline Json paired_summary(const std::vector<const Json*>& records,
   j.set("only_against", c.only_second);
   j.set("neither", c.neither);
   j.set("p_value", c.p_value);
+  // The power of the test on these pairs to tell the methods k_power_difference apart, at the
+  // disagreement measured between them (at least that difference: a smaller one cannot hold it).
+  const int pairs = c.both + c.only_first + c.only_second + c.neither;
+  const double discordance =
+      pairs > 0 ? static_cast<double>(c.only_first + c.only_second) / pairs : 0.0;
+  j.set("power_15",
+        mcnemar_exact_power(pairs, std::max(discordance, k_power_difference), k_power_difference));
   return j;
 }
 

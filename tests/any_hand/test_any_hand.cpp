@@ -145,6 +145,54 @@ TEST_CASE("two hands meet in one frame: root_for_grasp_frame undoes grasp_frame"
   CHECK((meet.linear().col(2) - gc.linear() * human_hand_axes.approach).norm() < 1e-12);
 }
 
+TEST_CASE("the paper's autoclose pairs the palms: palm_frame, root_for_palm_frame, autoclose_grasp",
+          "[any_hand][transfer]") {
+  // root_for_palm_frame undoes palm_frame, for the SDH whose palm centre is not its grasp frame.
+  Eigen::Isometry3d root = Eigen::Isometry3d::Identity();
+  root.linear() = Eigen::AngleAxisd(-1.1, Vec3(3, -1, 2).normalized()).toRotationMatrix();
+  root.translation() = Vec3(-0.05, 0.2, 0.1);
+  const HandGrasp<models::schunk_sdh> s{root, TransferOptions{}.sdh_preshape};
+  const Eigen::Isometry3d back = root_for_palm_frame<models::schunk_sdh>(palm_frame(s), s.q);
+  CHECK((back.matrix() - root.matrix()).norm() < 1e-12);
+  // The palm frame is turned as the grasp frame is, 7.45 cm nearer the SDH's flange than the
+  // grasp centre's 15 cm, along the approach.
+  const Eigen::Isometry3d palm = palm_frame(s), meet = grasp_frame(s);
+  CHECK((palm.linear() - meet.linear()).norm() < 1e-12);
+  CHECK((meet.translation() - palm.translation() -
+         (0.15 - models::sdh_dims::base_height) * meet.linear().col(2))
+            .norm() < 1e-12);
+
+  // Autoclose from the human grasp: the SDH at its usual pre-shape, its palm centre on the line
+  // through the human's palm centre along the human's approach, at or behind it (backed off only
+  // as far as needed to clear the object), its approach the human's; then closed and judged.
+  const GraspObject bottle = objects::bottle();
+  const HumanGrasp& g = bottle_demonstration();
+  REQUIRE(g.stable());
+  TransferOptions options;
+  const SdhTransfer a = transfer(TransferMethod::autoclose, bottle, g, options);
+  INFO(a.reason);
+  REQUIRE(a.planned);
+  CHECK(a.method == TransferMethod::autoclose);
+  CHECK(a.sweeps == 0);
+  CHECK(a.q_open == options.sdh_preshape);
+  const Eigen::Isometry3d human = palm_frame(source_grasp(g));
+  const Eigen::Isometry3d placed = palm_frame(HandGrasp<models::schunk_sdh>{a.hand_pose, a.q_open});
+  CHECK((placed.linear() - human.linear()).norm() < 1e-9);
+  const Vec3 along = placed.translation() - human.translation();
+  const double depth = along.dot(human.linear().col(2));
+  CHECK(depth <= 1e-9);
+  CHECK((along - depth * human.linear().col(2)).norm() < 1e-9);
+  CHECK(a.stability.shake().steps > 0);  // judged
+  // The same placement by transfer_hand (any pair of hands) and by transfer_autoclose.
+  CHECK(transfer_autoclose(bottle, g, options).hand_pose.isApprox(a.hand_pose, 1e-12));
+  const auto any =
+      transfer_hand<models::schunk_sdh>(TransferMethod::autoclose, bottle, source_grasp(g));
+  CHECK(any.hand_pose.isApprox(a.hand_pose, 1e-12));
+  // The transplant pairs the grasp centres instead and opens the hand further: another pose.
+  const SdhTransfer t = transfer(TransferMethod::transplant, bottle, g, options);
+  CHECK_FALSE(t.hand_pose.isApprox(a.hand_pose, 1e-6));
+}
+
 TEST_CASE(
     "human -> Allegro: the topological plan moves the windings toward the human's three "
     "largest, and the grasp is judged",
@@ -287,8 +335,9 @@ TEST_CASE("transfer_hand: bad input is refused with a reason or an exception nam
   REQUIRE(g.stable());
   auto source = source_grasp(g);
   source.root.translation().x() = std::numeric_limits<double>::infinity();
-  for (const TransferMethod m : {TransferMethod::topological, TransferMethod::transplant,
-                                 TransferMethod::fingertip, TransferMethod::virtual_finger}) {
+  for (const TransferMethod m :
+       {TransferMethod::topological, TransferMethod::autoclose, TransferMethod::transplant,
+        TransferMethod::fingertip, TransferMethod::virtual_finger}) {
     const auto r = transfer_hand<models::allegro_hand>(m, bottle, source);
     CHECK_FALSE(r.planned);
     CHECK(r.reason == "the source hand pose is not finite");

@@ -39,8 +39,9 @@ TEST_CASE("the command line's defaults and values", "[io][command_line]") {
   CHECK(d.experiment.objects[0].name == "hammer");
   CHECK(d.experiment.objects[1].name == "bottle");
   CHECK(d.experiment.methods ==
-        std::vector<TransferMethod>{TransferMethod::topological, TransferMethod::transplant,
-                                    TransferMethod::fingertip, TransferMethod::virtual_finger});
+        std::vector<TransferMethod>{TransferMethod::topological, TransferMethod::autoclose,
+                                    TransferMethod::transplant, TransferMethod::fingertip,
+                                    TransferMethod::virtual_finger});
   CHECK(d.experiment.jobs == 1);
   CHECK(d.experiment.seed == 1);
 

@@ -128,6 +128,12 @@ TEST_CASE("a small experiment: counts, schema and determinism", "[grasp][experim
         CHECK(both + only_against == topological_stable);
         CHECK(p.at("p_value").as_number() ==
               Approx(mcnemar_exact_p(static_cast<int>(only_this), static_cast<int>(only_against))));
+        // The power to tell 15 points apart on these pairs, at their disagreement (at least 15 %).
+        const double tested = s.at("tested").as_number();
+        CHECK(
+            p.at("power_15").as_number() ==
+            Approx(mcnemar_exact_power(static_cast<int>(tested),
+                                       std::max(0.15, (only_this + only_against) / tested), 0.15)));
         CHECK(s.at("paired_second").is_null());
       }
       for (const HumanGrasp& g : results[i].human) expected_grasps += g.reached ? 1 : 0;

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The Wilson interval against Newcombe's published examples, McNemar's exact test against exact
-// binomial sums, and what both do with bad input; Cohen's kappa; the median.
+// binomial sums and its power against a sum over every outcome, and what they do with bad input;
+// Cohen's kappa; the median.
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -67,6 +69,50 @@ TEST_CASE("McNemar's exact test is the two-sided binomial tail of the discordant
   CHECK(mcnemar_exact_p(2000, 2200) == Approx(0.0021323556719912346).epsilon(1e-7));
   CHECK_THROWS_WITH(mcnemar_exact_p(-1, 3), Catch::Contains("only_first"));
   CHECK_THROWS_WITH(mcnemar_exact_p(3, -1), Catch::Contains("only_second"));
+}
+
+TEST_CASE("McNemar's power is the chance that the test rejects, summed over every outcome",
+          "[evaluation][statistics]") {
+  // Every outcome of n pairs: b pairs only the better method holds, c only the other, with
+  // trinomial probabilities; the power is the mass of those the test itself rejects.
+  const auto enumerated = [](int n, double discordance, double difference, double alpha) {
+    const double pb = (discordance + difference) / 2.0, pc = (discordance - difference) / 2.0;
+    double power = 0.0;
+    for (int b = 0; b <= n; ++b)
+      for (int c = 0; b + c <= n; ++c) {
+        if (mcnemar_exact_p(b, c) > alpha) continue;
+        const double log_count = std::lgamma(n + 1.0) - std::lgamma(b + 1.0) -
+                                 std::lgamma(c + 1.0) - std::lgamma(n - b - c + 1.0);
+        power += std::exp(log_count + b * std::log(pb) + (c > 0 ? c * std::log(pc) : 0.0) +
+                          (n - b - c) * std::log1p(-pb - pc));
+      }
+    return power;
+  };
+  for (const int n : {1, 7, 25, 40})
+    for (const auto& [d, delta] :
+         {std::pair{0.17, 0.15}, std::pair{0.4, 0.1}, std::pair{0.3, 0.0}}) {
+      CAPTURE(n, d, delta);
+      CHECK(mcnemar_exact_power(n, d, delta) ==
+            Approx(enumerated(n, d, delta, 0.05)).margin(1e-12));
+      CHECK(mcnemar_exact_power(n, d, delta, 0.01) ==
+            Approx(enumerated(n, d, delta, 0.01)).margin(1e-12));
+    }
+  // No difference: the exact test's size, at most alpha; a difference grows with the pairs.
+  for (const int n : {10, 70, 300}) CHECK(mcnemar_exact_power(n, 0.2, 0.0) <= 0.05);
+  CHECK(mcnemar_exact_power(30, 0.17, 0.15) < 0.5);
+  CHECK(mcnemar_exact_power(300, 0.17, 0.15) > 0.999);
+  // Every discordant pair one way: only the count of discordant pairs is random.
+  CHECK(mcnemar_exact_power(20, 0.5, 0.5) > mcnemar_exact_power(20, 0.5, 0.4));
+  CHECK(mcnemar_exact_power(0, 0.2, 0.1) == 0.0);
+  CHECK(mcnemar_exact_power(50, 0.0, 0.0) == 0.0);
+  // Bad input is named.
+  CHECK_THROWS_WITH(mcnemar_exact_power(-1, 0.2, 0.1), Catch::Contains("pairs"));
+  CHECK_THROWS_WITH(mcnemar_exact_power(10, 1.5, 0.1), Catch::Contains("discordance"));
+  CHECK_THROWS_WITH(mcnemar_exact_power(10, std::nan(""), 0.1), Catch::Contains("discordance"));
+  CHECK_THROWS_WITH(mcnemar_exact_power(10, 0.2, -0.1), Catch::Contains("difference"));
+  CHECK_THROWS_WITH(mcnemar_exact_power(10, 0.1, 0.2), Catch::Contains("at most the discordance"));
+  CHECK_THROWS_WITH(mcnemar_exact_power(10, 0.2, 0.1, 0.0), Catch::Contains("alpha"));
+  CHECK_THROWS_WITH(mcnemar_exact_power(10, 0.2, 0.1, 1.0), Catch::Contains("alpha"));
 }
 
 TEST_CASE("a paired comparison counts the four kinds of pair", "[evaluation][statistics]") {

@@ -14,12 +14,13 @@ TEST_CASE("every transfer method is found by its name, and no other name",
   for (const TransferMethod m : all_transfer_methods) {
     INFO(to_string(m));
     CHECK(transfer_method(to_string(m)) == m);
-    CHECK(is_topological(m) == (m != TransferMethod::transplant && m != TransferMethod::fingertip &&
-                                m != TransferMethod::virtual_finger));
+    CHECK(is_topological(m) ==
+          (m != TransferMethod::autoclose && m != TransferMethod::transplant &&
+           m != TransferMethod::fingertip && m != TransferMethod::virtual_finger));
   }
   CHECK_THROWS_WITH(transfer_method("papers"),
                     Catch::StartsWith("method: unknown method \"papers\" (expected topological, "
-                                      "transplant, fingertip, virtual_finger, paper,") &&
+                                      "autoclose, transplant, fingertip, virtual_finger, paper,") &&
                         Catch::EndsWith("closed_windings, no_plan or shuffled_windings)"));
 }
 

@@ -72,8 +72,9 @@ TEST_CASE("a human grasp with NaN is refused by every method in its result",
   HumanGrasp bad_pose = hammer_grasp();
   bad_pose.hand_pose.translation().x() = std::numeric_limits<double>::quiet_NaN();
   const TransferOptions options;
-  for (const TransferMethod m : {TransferMethod::fingertip, TransferMethod::transplant,
-                                 TransferMethod::virtual_finger, TransferMethod::topological}) {
+  for (const TransferMethod m :
+       {TransferMethod::fingertip, TransferMethod::autoclose, TransferMethod::transplant,
+        TransferMethod::virtual_finger, TransferMethod::topological}) {
     CAPTURE(to_string(m));
     check_not_planned(transfer(m, hammer, bad_q, options), m,
                       "the human configuration is not finite");

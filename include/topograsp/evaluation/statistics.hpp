@@ -2,7 +2,8 @@
 /// \file
 /// The statistics of a success rate and of a paired comparison, as Table I reports them: the
 /// Wilson score interval of a rate, and McNemar's exact test of two methods judged on the same
-/// grasps; Cohen's kappa of two judges; and the median of a sample. See docs/evaluation.md.
+/// grasps and its power; Cohen's kappa of two judges; and the median of a sample. See
+/// docs/evaluation.md.
 #pragma once
 
 #include <algorithm>
@@ -81,6 +82,60 @@ struct RateInterval {
   double sum = 0.0;
   for (int i = 0; i <= k; ++i) sum += std::exp(log_pmf(i) - top);
   return std::min(1.0, 2.0 * std::exp(top) * sum);
+}
+
+/// The power of McNemar's exact test (mcnemar_exact_p, two-sided, rejecting at p <= \p alpha) to
+/// tell two methods apart on \p pairs grasps when they disagree on a fraction \p discordance of
+/// the grasps and their success rates differ by \p difference: the probability that the test
+/// rejects when, per grasp, only the better method succeeds with probability
+/// (discordance + difference) / 2 and only the other with (discordance - difference) / 2. Summed
+/// exactly over the number of discordant pairs D ~ Binomial(pairs, discordance) and the split of
+/// each D, with the test's own rejection region per D; O(pairs^2). Like every exact test's, it is
+/// not monotone in \p pairs (a saw-tooth around the smooth curve), and at difference 0 it is the
+/// test's size, at most alpha.
+/// \throws topograsp::invalid_argument for pairs < 0, discordance or difference outside [0, 1],
+/// difference > discordance (more difference than disagreement is impossible), or alpha outside
+/// (0, 1).
+[[nodiscard]] inline double mcnemar_exact_power(int pairs, double discordance, double difference,
+                                                double alpha = 0.05) {
+  if (pairs < 0) detail::throw_invalid_argument("pairs", "expected >= 0");
+  if (!(discordance >= 0.0 && discordance <= 1.0))
+    detail::throw_invalid_argument("discordance", "expected a fraction in [0, 1]");
+  if (!(difference >= 0.0 && difference <= 1.0))
+    detail::throw_invalid_argument("difference", "expected a fraction in [0, 1]");
+  if (difference > discordance)
+    detail::throw_invalid_argument(
+        "difference", "expected at most the discordance (" + std::to_string(discordance) +
+                          "): two methods differ only where they disagree");
+  if (!(alpha > 0.0 && alpha < 1.0))
+    detail::throw_invalid_argument("alpha", "expected a level in (0, 1)");
+  if (pairs == 0 || discordance == 0.0) return 0.0;
+  // log C(n, i) + i log p + (n - i) log(1 - p), with 0 log 0 = 0.
+  const auto log_binomial = [](int n, int i, double p) {
+    const double a = i > 0 ? i * std::log(p) : 0.0;
+    const double b = n - i > 0 ? (n - i) * std::log1p(-p) : 0.0;
+    return std::lgamma(n + 1.0) - std::lgamma(i + 1.0) - std::lgamma(n - i + 1.0) + a + b;
+  };
+  const double better = std::min(1.0, (discordance + difference) / (2.0 * discordance));
+  double power = 0.0;
+  for (int d = 1; d <= pairs; ++d) {
+    // The largest k with mcnemar_exact_p(k, d - k) <= alpha: the cumulative Binomial(d, 1/2)
+    // tail, grown term by term (the p-value of min(b, c) = k is min(1, 2 P(X <= k))).
+    int k = -1;
+    double tail = 0.0;
+    while (k + 1 < d - (k + 1)) {
+      tail += std::exp(log_binomial(d, k + 1, 0.5));
+      if (2.0 * tail > alpha) break;
+      ++k;
+    }
+    if (k < 0) continue;
+    // P(b <= k) + P(b >= d - k) for b ~ Binomial(d, better): either method's win rejects.
+    double reject = 0.0;
+    for (int i = 0; i <= k; ++i)
+      reject += std::exp(log_binomial(d, i, better)) + std::exp(log_binomial(d, d - i, better));
+    power += std::exp(log_binomial(pairs, d, discordance)) * reject;
+  }
+  return std::min(1.0, power);
 }
 
 /// Two methods judged on the same grasps: how often only one of them succeeded, and McNemar's

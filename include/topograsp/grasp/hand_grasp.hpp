@@ -230,20 +230,41 @@ template <const auto& M>
   return {t.hand_pose, t.q_closed};
 }
 
+namespace detail {
+// The pose (object frame) of frame `at` of hand M at g, turned as grasp_frame turns the grasp
+// frame (z the approach, x up: hand_profile's axes, in the world).
+template <const auto& M>
+Eigen::Isometry3d turned_frame(const HandGrasp<M>& g, int at) {
+  const HandProfile<M> profile = hand_profile<M>();
+  KinematicsData<M> d;
+  forward_kinematics(d, g.q);
+  const Eigen::Matrix3d R = g.root.linear() * frame_pose(d, profile.frame).linear();
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = palm_rotation(gripper_hand_axes, R * profile.axes.approach, R * profile.axes.up);
+  T.translation() = g.root * frame_pose(d, at).translation();
+  return T;
+}
+
+// The root pose of hand M (joints q) that puts frame `at`, turned as turned_frame turns it, at T.
+template <const auto& M>
+Eigen::Isometry3d root_for_turned_frame(const Eigen::Isometry3d& T, const Vec<M.nq>& q, int at) {
+  const HandProfile<M> profile = hand_profile<M>();
+  KinematicsData<M> d;
+  forward_kinematics(d, q);
+  Eigen::Isometry3d local = frame_pose(d, at);
+  local.linear() =
+      frame_pose(d, profile.frame).linear() *
+      palm_rotation(profile.axes, gripper_hand_axes.approach, gripper_hand_axes.up).transpose();
+  return T * local.inverse();
+}
+}  // namespace detail
+
 /// The pose (object frame) of the frame that hand \p M grasps with (hand_profile) at \p g,
 /// rotated so that its z axis is the hand's approach and its x axis its "up": the frame in which
 /// two hands meet.
 template <const auto& M>
 [[nodiscard]] Eigen::Isometry3d grasp_frame(const HandGrasp<M>& g) {
-  const HandProfile<M> profile = hand_profile<M>();
-  KinematicsData<M> d;
-  forward_kinematics(d, g.q);
-  const Eigen::Isometry3d f = g.root * frame_pose(d, profile.frame);
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.linear() = palm_rotation(gripper_hand_axes, f.linear() * profile.axes.approach,
-                             f.linear() * profile.axes.up);
-  T.translation() = f.translation();
-  return T;
+  return detail::turned_frame(g, hand_profile<M>().frame);
 }
 
 /// The root pose of hand \p M (joints \p q) that puts its grasp frame at \p T (grasp_frame's
@@ -251,14 +272,24 @@ template <const auto& M>
 template <const auto& M>
 [[nodiscard]] Eigen::Isometry3d root_for_grasp_frame(const Eigen::Isometry3d& T,
                                                      const Vec<M.nq>& q) {
-  const HandProfile<M> profile = hand_profile<M>();
-  KinematicsData<M> d;
-  forward_kinematics(d, q);
-  Eigen::Isometry3d local = frame_pose(d, profile.frame);
-  local.linear() =
-      local.linear() *
-      palm_rotation(profile.axes, gripper_hand_axes.approach, gripper_hand_axes.up).transpose();
-  return T * local.inverse();
+  return detail::root_for_turned_frame<M>(T, q, hand_profile<M>().frame);
+}
+
+/// The pose (object frame) of hand \p M's palm centre (its model's palm frame) at \p g, turned as
+/// grasp_frame turns the grasp frame (z the approach, x up): where the paper's autoclose puts one
+/// hand's palm on another's. For every hand but the human hand and the SDH, the palm centre is
+/// the grasp frame.
+template <const auto& M>
+[[nodiscard]] Eigen::Isometry3d palm_frame(const HandGrasp<M>& g) {
+  return detail::turned_frame(g, detail::palm_frame_of<M>());
+}
+
+/// The root pose of hand \p M (joints \p q) that puts its palm frame at \p T (palm_frame's
+/// convention).
+template <const auto& M>
+[[nodiscard]] Eigen::Isometry3d root_for_palm_frame(const Eigen::Isometry3d& T,
+                                                    const Vec<M.nq>& q) {
+  return detail::root_for_turned_frame<M>(T, q, detail::palm_frame_of<M>());
 }
 
 /// The approach of hand \p M's grasp frame (hand_profile) in the frame of its root link, at

@@ -57,7 +57,11 @@ enum class WindingReference : std::uint8_t {
 /// - no_plan (a control): no plan at all, the hand judged at the plan's start (moved on until
 ///   contact and closed as every variant is; TransferOptions::plan false);
 /// - shuffled_windings (a control): topograsp's method aimed at another demonstration's windings
-///   (the caller gives the grasp with them: with_windings_of(), grasp_transfer's partner rule).
+///   (the caller gives the grasp with them: transfer_shuffled(), grasp_transfer's partner rule).
+///
+/// The baselines place the hand without a plan: autoclose (the paper's baseline: the target's
+/// palm at the source's palm, its usual pre-shape, closed), transplant (a fairer one: the grasp
+/// centres paired, the hand opened by transplant_opening), fingertip and virtual_finger.
 enum class TransferMethod : std::uint8_t {
   topological,
   transplant,
@@ -70,21 +74,21 @@ enum class TransferMethod : std::uint8_t {
   virtual_finger,
   closed_windings,
   no_plan,
-  shuffled_windings
+  shuffled_windings,
+  autoclose
 };
 
 /// Every transfer method, in the order --help lists them.
-inline constexpr std::array<TransferMethod, 12> all_transfer_methods{
-    TransferMethod::topological,    TransferMethod::transplant,
-    TransferMethod::fingertip,      TransferMethod::virtual_finger,
-    TransferMethod::paper,          TransferMethod::paper_line,
-    TransferMethod::paper_approach, TransferMethod::no_windings,
-    TransferMethod::nearest_point,  TransferMethod::closed_windings,
-    TransferMethod::no_plan,        TransferMethod::shuffled_windings};
+inline constexpr std::array<TransferMethod, 13> all_transfer_methods{
+    TransferMethod::topological,      TransferMethod::autoclose,       TransferMethod::transplant,
+    TransferMethod::fingertip,        TransferMethod::virtual_finger,  TransferMethod::paper,
+    TransferMethod::paper_line,       TransferMethod::paper_approach,  TransferMethod::no_windings,
+    TransferMethod::nearest_point,    TransferMethod::closed_windings, TransferMethod::no_plan,
+    TransferMethod::shuffled_windings};
 
-/// The name of \p m ("topological", "transplant", "fingertip", "virtual_finger", "paper",
-/// "paper_line", "paper_approach", "no_windings", "nearest_point", "closed_windings", "no_plan",
-/// "shuffled_windings").
+/// The name of \p m ("topological", "autoclose", "transplant", "fingertip", "virtual_finger",
+/// "paper", "paper_line", "paper_approach", "no_windings", "nearest_point", "closed_windings",
+/// "no_plan", "shuffled_windings").
 [[nodiscard]] constexpr std::string_view to_string(TransferMethod m) noexcept {
   switch (m) {
     case TransferMethod::topological:
@@ -111,14 +115,16 @@ inline constexpr std::array<TransferMethod, 12> all_transfer_methods{
       return "no_plan";
     case TransferMethod::shuffled_windings:
       return "shuffled_windings";
+    case TransferMethod::autoclose:
+      return "autoclose";
   }
   return "unknown";
 }
 
 /// Whether \p m is the topological method or one of its named variants (transfer_topological).
 [[nodiscard]] constexpr bool is_topological(TransferMethod m) noexcept {
-  return m != TransferMethod::transplant && m != TransferMethod::fingertip &&
-         m != TransferMethod::virtual_finger;
+  return m != TransferMethod::autoclose && m != TransferMethod::transplant &&
+         m != TransferMethod::fingertip && m != TransferMethod::virtual_finger;
 }
 
 /// The method called \p name (to_string of one of all_transfer_methods).

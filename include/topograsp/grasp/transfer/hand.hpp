@@ -21,7 +21,7 @@ namespace topograsp {
 /// (its closing corrections run on the arm: transfer_hand_on_arm, transfer()) and
 /// shuffled_windings (it needs another demonstration: transfer_shuffled()): the topological
 /// method, its named variants (paper, paper_line, paper_approach, no_windings, nearest_point),
-/// the no_plan control, and the transplant, fingertip and virtual-finger baselines.
+/// the no_plan control, and the autoclose, transplant, fingertip and virtual-finger baselines.
 [[nodiscard]] constexpr bool any_hand_method(TransferMethod m) noexcept {
   return m != TransferMethod::closed_windings && m != TransferMethod::shuffled_windings;
 }
@@ -35,6 +35,8 @@ HandTransfer<Target> baseline_grasp(TransferMethod method, const GraspObject& ob
                                     const HandGrasp<Source>& source, const TransferOptions& options,
                                     const SecondJudge<Target>& second) {
   switch (method) {
+    case TransferMethod::autoclose:
+      return autoclose_grasp<Target>(object, source, options, second);
     case TransferMethod::transplant:
       return transplant_grasp<Target>(object, source, options, second);
     case TransferMethod::fingertip:
@@ -72,6 +74,9 @@ HandTransfer<Target> topological_from_source(TransferMethod method, const GraspO
 
 /// Transfers \p source, a grasp of hand \p Source on \p object, to hand \p Target on a free
 /// base, by \p method:
+/// - autoclose (autoclose_grasp, the paper's baseline): Target's palm frame at the source's
+///   (palm_frame), its joints at base_preshape, backed off along its approach only as far as
+///   needed to clear the object, closed until contact;
 /// - transplant (transplant_grasp): Target's grasp frame at the source's (grasp_frame: the same
 ///   point, approach and up), its joints at opened_preshape(options.transplant_opening,
 ///   base_preshape), backed off along its approach only as far as needed to clear the object,
@@ -125,8 +130,8 @@ template <const auto& Target, const auto& Source>
 ///
 /// A source grasp that is not finite or a plan that cannot be placed gives an unplanned result
 /// whose reason says why. \throws topograsp::invalid_argument naming "method" for the baselines
-/// (transplant, fingertip, virtual_finger: they place the hand without an arm, transfer_hand),
-/// and as validate_transfer_parameters for options out of range.
+/// (autoclose, transplant, fingertip, virtual_finger: they place the hand without an arm,
+/// transfer_hand), and as validate_transfer_parameters for options out of range.
 template <const auto& Target, const auto& Source>
   requires HandModel<decltype(Target)> && HandModel<decltype(Source)>
 [[nodiscard]] HandTransfer<Target> transfer_hand_on_arm(TransferMethod method,

@@ -2,8 +2,8 @@
 /// \file
 /// The paper's Table I on the Schunk SDH: a human demonstration (HumanGrasp) transferred to the SDH
 /// by each method, the topological one on the arm. Each is a thin call of the method for any pair
-/// of hands (transplant_grasp, fingertip_grasp, virtual_finger_grasp, detail::topological_on_arm),
-/// judged also by options.sim.second_judge_sdh.
+/// of hands (autoclose_grasp, transplant_grasp, fingertip_grasp, virtual_finger_grasp,
+/// detail::topological_on_arm), judged also by options.sim.second_judge_sdh.
 ///
 /// The SDH's functions are templates with nothing to give (`template <class = void>`): a
 /// translation unit that includes this header for another hand does not instantiate the SDH's
@@ -67,7 +67,19 @@ template <class = void>
   return opened_preshape<models::schunk_sdh>(options.transplant_opening, options.sdh_preshape);
 }
 
-/// The paper's baseline on the SDH (transplant_grasp from the human hand), judged also by
+/// The paper's baseline on the SDH (autoclose_grasp from the human hand: the SDH's palm at the
+/// human's, its usual pre-shape options.sdh_preshape, closed), judged also by
+/// options.sim.second_judge_sdh.
+template <class = void>
+[[nodiscard]] SdhTransfer transfer_autoclose(const GraspObject& object, const HumanGrasp& g,
+                                             const TransferOptions& options = {}) {
+  return detail::sdh_from_human(TransferMethod::autoclose, g, options, [&](auto s, auto& second) {
+    return autoclose_grasp<models::schunk_sdh>(object, s, options, second);
+  });
+}
+
+/// The fair transplant baseline on the SDH (transplant_grasp from the human hand: the grasp
+/// centres paired, the SDH opened by options.transplant_opening), judged also by
 /// options.sim.second_judge_sdh.
 template <class = void>
 [[nodiscard]] SdhTransfer transfer_transplant(const GraspObject& object, const HumanGrasp& g,
