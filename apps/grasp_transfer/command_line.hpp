@@ -251,7 +251,8 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
                                                   "--judge",
                                                   "--demonstrations",
                                                   "--hypotheses",
-                                                  "--closing"};
+                                                  "--closing",
+                                                  "--setting"};
     bool known = false;
     for (const std::string_view o : value_options) known = known || o == arg;
     if (!known)
@@ -323,6 +324,11 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
     } else if (arg == "--hypotheses") {
       cli.experiment.hypotheses =
           enum_from_name(value, {HypothesisRule::box, HypothesisRule::demonstrator}, arg, "rule");
+    } else if (arg == "--setting") {
+      if (value != "hand" && value != "arm")
+        detail::throw_invalid_argument(
+            arg, "expected hand or arm, got " + detail::quote_argument(value));
+      cli.experiment.arm_setting = value == "arm";
     } else if (arg == "--closing") {
       if (value != "free" && value != "held" && value != "balanced")
         detail::throw_invalid_argument(
@@ -450,6 +456,11 @@ options:
                    held still, which is then released for 0.25 s before the tests; the human
                    hand approaches palm first) or balanced (held, and every hand holds with
                    torques whose contact forces balance on the object)
+  --setting S      hand (default: every hand placed and judged without the arm; the topological
+                   plan runs on the arm with the object turned to meet it) or arm (the paper's
+                   setting: each object fixed in front of the arm, the plan starting at the arm's
+                   ready pose, every method's hand reached by the arm by inverse kinematics,
+                   clear of the object, or failed: docs/transfer.md, "The arm setting")
   --winding-reference R  where the windings are taken: centre_of_mass (default, the paper)
                    or nearest_point (the object's point nearest the human's grasp centre)
   --friction MU    one Coulomb coefficient for every hand-object pair, in (0, 10], for a friction

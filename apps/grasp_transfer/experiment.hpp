@@ -87,6 +87,11 @@ struct ExperimentOptions {
   /// the default) or demonstrator_hypotheses (8 rolls per face, each also jittered once,
   /// grasp_transfer --hypotheses demonstrator).
   HypothesisRule hypotheses = HypothesisRule::box;
+  /// The arm setting (grasp_transfer --setting arm): each object fixed in front of the arm
+  /// (arm_setting_object_pose(), TransferOptions::arm_object), every method's hand reached by
+  /// the arm. False (--setting hand, the default): the object turned to meet the topological
+  /// plan, the hand alone placed and judged.
+  bool arm_setting = false;
   /// When two stable demonstrations count as the same grasp (grasp_clusters()).
   GraspTolerance grasp_tolerance{};
 };
@@ -360,6 +365,7 @@ std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& o
         const GraspObject& object = options.objects[oi];
         TransferOptions transfer_options = options.transfer;
         transfer_options.sim.stability.seed = grasp_seed(options.seed, object.name, id);
+        if (options.arm_setting) transfer_options.arm_object = arm_setting_object_pose(object);
         HumanGrasp& g = human[static_cast<std::size_t>(k)];
         const auto i = static_cast<std::size_t>(id);
         g = recorded[oi].empty()

@@ -281,6 +281,7 @@ inline void check_scene_names(const ExperimentOptions& options) {
   cfg.set("judge", std::string(to_string(options.judge)));
   cfg.set("closing_steps", options.transfer.sim.close.closing_steps);
   cfg.set("hypotheses", std::string(to_string(options.hypotheses)));
+  cfg.set("setting", options.arm_setting ? "arm" : "hand");
   cfg.set("palm_first", options.transfer.sim.palm_first);
   cfg.set("hold_object", options.transfer.sim.close.hold_object);
   cfg.set("release_steps", options.transfer.sim.close.release_steps);
@@ -377,6 +378,8 @@ inline void check_scene_names(const ExperimentOptions& options) {
     // opposition), null if nothing.
     r.set("planner", t.planned && !t.reason.empty() ? Json(t.reason) : Json());
     r.set("closing", detail::json_closing(t.planned ? &t.closing : nullptr));
+    // The arm setting: the arm's joints that reach the hand (the best found when it cannot).
+    r.set("arm_joints", t.arm_joints ? detail::json_vector(*t.arm_joints) : Json());
     detail::set_stability(r, t.planned ? &t.stability : nullptr);
     detail::set_second_and_quality(r, t.planned ? t.second : std::nullopt,
                                    t.planned ? &t.quality : nullptr, second_name);

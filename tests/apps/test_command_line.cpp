@@ -142,6 +142,16 @@ TEST_CASE("the options --hypotheses and --closing choose the demonstrations' rul
              Catch::StartsWith("--closing: given twice"));
 }
 
+TEST_CASE("the option --setting chooses the hand or the arm setting", "[io][command_line]") {
+  CHECK_FALSE(parse({}).experiment.arm_setting);
+  CHECK_FALSE(parse({"--setting", "hand"}).experiment.arm_setting);
+  CHECK(parse({"--setting", "arm"}).experiment.arm_setting);
+  CHECK_THAT(error_of({"--setting", "paper"}),
+             Catch::StartsWith("--setting: expected hand or arm, got \"paper\""));
+  CHECK_THAT(error_of({"--setting", "arm", "--setting", "hand"}),
+             Catch::StartsWith("--setting: given twice"));
+}
+
 TEST_CASE("the resume flag, and merge with the shards' folders", "[io][command_line]") {
   CHECK_FALSE(parse({}).resume);
   CHECK(parse({"--resume"}).resume);

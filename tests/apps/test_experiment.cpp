@@ -72,6 +72,7 @@ TEST_CASE("a small experiment: counts, schema and determinism", "[grasp][experim
     REQUIRE(doc.at("config").is_object());
     CHECK(doc.at("config").at("objects").as_array().size() == 2);
     CHECK(doc.at("config").at("methods").as_array().size() == 3);
+    CHECK(doc.at("config").at("setting").as_string() == "hand");
     const auto& objects = doc.at("objects").as_array();
     REQUIRE(objects.size() == 2);
     std::size_t expected_grasps = 0;
@@ -194,6 +195,8 @@ TEST_CASE("a small experiment: counts, schema and determinism", "[grasp][experim
         CHECK_FALSE(g.contains("planner"));
       else
         CHECK((g.at("planner").is_null() || g.at("planner").is_string()));
+      // The arm's joints only in the arm setting (--setting arm).
+      if (g.at("method").as_string() != "human") CHECK(g.at("arm_joints").is_null());
       // Every test's record when the grasp was simulated; stable iff all but the hard shake
       // passed, and then the reason is empty.
       const auto& tests = g.at("tests").as_array();

@@ -204,6 +204,9 @@ struct HandTransfer {
   StabilityResult stability;              ///< the deciding judge's verdict and records
   std::optional<StabilityResult> second;  ///< the other judge's, if there is one
   QualityRecord quality;                  ///< Ferrari-Canny epsilon when closing ended
+  /// The arm setting (TransferOptions::arm_object): the arm's joints that put the hand at
+  /// hand_pose (arm_reach()); unset without the arm setting.
+  std::optional<Vec<7>> arm_joints;
   /// Where the object was when closing ended (it starts at the identity): with hand_pose and
   /// q_closed, the grasp that the stability suite started from.
   Eigen::Isometry3d object_pose = Eigen::Isometry3d::Identity();

@@ -14,6 +14,7 @@
 #include <utility>
 
 #include <topograsp/geometry/signed_distance.hpp>
+#include <topograsp/grasp/arm_reach.hpp>
 #include <topograsp/grasp/hand_grasp.hpp>
 #include <topograsp/grasp/human_grasps.hpp>
 #include <topograsp/grasp/transfer/options.hpp>
@@ -97,9 +98,15 @@ template <const auto& M>
 struct TransferRun {
   Clock::time_point t0 = Clock::now();
   HandTransfer<M> r;
+  // The arm setting (options.arm_object): the object's pose in the arm's world and the arm's
+  // ready pose, from which judge() reaches the hand.
+  std::optional<Eigen::Isometry3d> arm_object;
+  Vec<7> arm_ready = Vec<7>::Zero();
 
-  // A transfer by method of a source that is unusable for the reason unusable (empty: usable).
-  TransferRun(TransferMethod method, std::string unusable) {
+  // A transfer by method of a source that is unusable for the reason unusable (empty: usable),
+  // with options' arm setting.
+  TransferRun(TransferMethod method, std::string unusable, const TransferOptions& options)
+      : arm_object(options.arm_object), arm_ready(options.arm_ready) {
     r.method = method;
     r.reason = std::move(unusable);
   }
@@ -117,10 +124,18 @@ struct TransferRun {
     return unplanned();
   }
   // The hand at the placed root (object frame) with joints q closed until contact and judged by
-  // the stability suite (and by second if set): planned; r.reason is kept.
+  // the stability suite (and by second if set): planned; r.reason is kept. In the arm setting
+  // the arm must reach it first (arm_reach), else it is unplanned with the reason why.
   HandTransfer<M> judge(const GraspObject& object, const Eigen::Isometry3d& root,
                         const Vec<M.nq>& q, const GraspSimOptions& sim,
                         const SecondJudge<M>& second) {
+    if (arm_object) {
+      r.hand_pose = root;
+      r.q_open = q;
+      const ArmReach reach = arm_reach(object, *arm_object, root, arm_ready);
+      r.arm_joints = reach.q_arm;
+      if (!reach.reached) return unplanned(reach.reason);
+    }
     r.planned = true;
     simulate_hand_grasp<M>(object, root, q, sim, second, r);
     return std::move(r);

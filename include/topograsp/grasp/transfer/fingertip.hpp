@@ -220,7 +220,8 @@ template <const auto& Target, const auto& Source>
                                                    const HandGrasp<Source>& source,
                                                    const TransferOptions& options = {},
                                                    const SecondJudge<Target>& second = {}) {
-  detail::TransferRun<Target> run(TransferMethod::fingertip, detail::unusable_source_grasp(source));
+  detail::TransferRun<Target> run(TransferMethod::fingertip, detail::unusable_source_grasp(source),
+                                  options);
   if (run.refused()) return run.unplanned();
   constexpr auto& F = FreeBase<Target>::model;
   constexpr auto pairs = detail::fingertip_pairs<Target, Source>();

@@ -57,7 +57,7 @@ HandTransfer<Target> topological_from_source(TransferMethod method, const GraspO
                                              const HandGrasp<Source>& source,
                                              const TransferOptions& options,
                                              const SecondJudge<Target>& second) {
-  TransferRun<Target> run(method, unusable_source_grasp(source));
+  TransferRun<Target> run(method, unusable_source_grasp(source), options);
   if (run.refused()) return run.unplanned();
   const Eigen::Isometry3d meet = grasp_frame(source);
   const Vec3 reference =

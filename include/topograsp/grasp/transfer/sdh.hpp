@@ -44,7 +44,7 @@ inline Eigen::Isometry3d sdh_root_for_grasp_centre(const Eigen::Isometry3d& T) {
 template <class Run>
 SdhTransfer sdh_from_human(TransferMethod method, const HumanGrasp& g,
                            const TransferOptions& options, Run run) {
-  TransferRun<models::schunk_sdh> refusal(method, unusable_human_grasp(g));
+  TransferRun<models::schunk_sdh> refusal(method, unusable_human_grasp(g), options);
   if (refusal.refused()) return refusal.unplanned();
   return run(source_grasp(g), options.sim.second_judge_sdh);
 }
@@ -145,7 +145,7 @@ template <class = void>
 [[nodiscard]] SdhTransfer transfer_topological(const GraspObject& object, const HumanGrasp& g,
                                                const TransferOptions& options = {}) {
   detail::TransferRun<models::schunk_sdh> run(TransferMethod::topological,
-                                              detail::unusable_human_grasp(g));
+                                              detail::unusable_human_grasp(g), options);
   if (run.refused()) return run.unplanned();
   const Vec3 reference = winding_reference_point(object, g, options.winding_reference);
   const Vec2 y = options.winding_reference == WindingReference::centre_of_mass
@@ -182,7 +182,7 @@ template <class = void>
   if (other == nullptr || !other->reached) {
     detail::TransferRun<models::schunk_sdh> run(
         TransferMethod::shuffled_windings,
-        "no other demonstration reached the object to take windings from");
+        "no other demonstration reached the object to take windings from", options);
     return run.unplanned();
   }
   HumanGrasp aimed = g;

@@ -221,7 +221,8 @@ HandTransfer<M> topological_plan(const GraspObject& object, const TopologicalSta
 // The topological method for hand M on the arm (OnArm<M>), the source's grasp frame source_frame
 // (object frame) and windings y around reference (object frame) given: the object placed (turned)
 // so that the source's grasp frame maps onto M's at the ready pose (options.arm_ready,
-// base_preshape), pushed out by options.backoff, then topological_plan; the final hand moves on
+// base_preshape), pushed out by options.backoff, or in the arm setting (options.arm_object) left
+// where it is, the plan starting at the ready pose; then topological_plan; the final hand moves on
 // along its own approach.
 template <const auto& M>
 HandTransfer<M> topological_on_arm(const GraspObject& object, const Eigen::Isometry3d& source_frame,
@@ -238,6 +239,15 @@ HandTransfer<M> topological_on_arm(const GraspObject& object, const Eigen::Isome
       d, A.find_frame(M.frames[static_cast<std::size_t>(profile.frame)].spec.name.view()));
   gc.linear() =
       gc.linear() * palm_rotation(profile.axes, gripper_hand_axes.approach, gripper_hand_axes.up);
+  if (options.arm_object) {
+    // The arm setting: the source's grasp frame where the fixed object puts it.
+    start.world_object = *options.arm_object;
+    const Eigen::Isometry3d source_world = start.world_object * source_frame;
+    start.approach = source_world.linear().col(2);
+    start.axis_target = start.approach.normalized();
+    start.grasp_point = source_world.translation();
+    return topological_plan<M>(object, start, y, reference, options, second, run);
+  }
   start.approach = gc.linear().col(2);
   start.axis_target = start.approach.normalized();
   // The object such that the source's grasp frame maps onto the hand's, pushed out by the backoff.

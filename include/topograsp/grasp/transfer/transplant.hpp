@@ -23,8 +23,8 @@ template <const auto& Target, const auto& Source>
                                                     const HandGrasp<Source>& source,
                                                     const TransferOptions& options = {},
                                                     const SecondJudge<Target>& second = {}) {
-  detail::TransferRun<Target> run(TransferMethod::transplant,
-                                  detail::unusable_source_grasp(source));
+  detail::TransferRun<Target> run(TransferMethod::transplant, detail::unusable_source_grasp(source),
+                                  options);
   if (run.refused()) return run.unplanned();
   const Eigen::Isometry3d target = grasp_frame(source);
   const Vec<Target.nq> preshape =
@@ -47,7 +47,8 @@ template <const auto& Target, const auto& Source>
                                                    const HandGrasp<Source>& source,
                                                    const TransferOptions& options = {},
                                                    const SecondJudge<Target>& second = {}) {
-  detail::TransferRun<Target> run(TransferMethod::autoclose, detail::unusable_source_grasp(source));
+  detail::TransferRun<Target> run(TransferMethod::autoclose, detail::unusable_source_grasp(source),
+                                  options);
   if (run.refused()) return run.unplanned();
   const Eigen::Isometry3d target = palm_frame(source);
   const Vec<Target.nq> preshape = base_preshape<Target>(options);

@@ -81,7 +81,7 @@ template <const auto& Target, const auto& Source>
                                                         const TransferOptions& options = {},
                                                         const SecondJudge<Target>& second = {}) {
   detail::TransferRun<Target> run(TransferMethod::virtual_finger,
-                                  detail::unusable_source_grasp(source));
+                                  detail::unusable_source_grasp(source), options);
   if (run.refused()) return run.unplanned();
   KinematicsData<Source> sd;
   forward_kinematics(sd, source.q);
