@@ -5,16 +5,14 @@
 /// then the arm's clearance from the object). docs/transfer.md, "The arm setting".
 #pragma once
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <string>
 
 #include <topograsp/core/random.hpp>
-#include <topograsp/geometry/model_shapes.hpp>
-#include <topograsp/geometry/signed_distance.hpp>
 #include <topograsp/grasp/object.hpp>
+#include <topograsp/grasp/placement.hpp>
 #include <topograsp/kinematics/forward.hpp>
 #include <topograsp/kinematics/jacobian.hpp>
 #include <topograsp/kinematics/least_squares.hpp>
@@ -101,15 +99,6 @@ template <class = void>
     J.template bottomRows<3>() = frame_rotation_jacobian(d, flange);
   };
   const Composite shape = object.composite(world_object);
-  const auto arm_clearance = [&]() {
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < A.n_shapes; ++i) {
-      const Primitive s = world_shape(d, i);
-      for (const Primitive& part : shape.parts())
-        best = std::min(best, signed_distance(s, part).distance);
-    }
-    return best;
-  };
   BoundedLeastSquaresOptions lm;
   lm.iterations = options.iterations;
   lm.settled = 1e-16;
@@ -126,7 +115,7 @@ template <class = void>
     (void)bounded_least_squares<7, 6>(x, e, cost, lo, hi, residual, jacobian, J, lm);
     const double pos = e.template head<3>().norm(), rot = e.template tail<3>().norm();
     const bool within = pos <= options.position_tolerance && rot <= options.rotation_tolerance;
-    const double clearance = within ? arm_clearance() : out.clearance;
+    const double clearance = within ? hand_object_distance(d, shape) : out.clearance;
     const double error = pos + 0.1 * rot;  // 1 rad weighs as 10 cm, for the report only
     if ((within && clearance >= options.clearance) || error < best_error) {
       best_error = error;
