@@ -118,10 +118,16 @@ TEST_CASE("in the arm setting every method is reached by the arm or not planned,
       CHECK_FALSE(t.stable());
     }
   }
-  // The topological plan starts at the arm's ready pose with the object where it is: without the
-  // arm setting it starts with the object turned to meet it, 3 cm out.
-  const SdhTransfer fixed = transfer(TransferMethod::topological, bottle, g, options);
-  CHECK(fixed.sweeps > 0);
+  // The topological plan and the no_plan control need the arm at the plan's start too.
+  for (const TransferMethod m : {TransferMethod::topological, TransferMethod::no_plan}) {
+    CAPTURE(to_string(m));
+    const SdhTransfer t = transfer(m, bottle, g, options);
+    INFO(t.reason);
+    REQUIRE(t.arm_joints.has_value());
+    if (!t.planned)
+      CHECK_THAT(t.reason,
+                 Catch::StartsWith("the arm cannot reach") || Catch::StartsWith("the arm strikes"));
+  }
   // Far out of reach: every method fails with the arm's reason.
   options.arm_object->translation() += Vec3(3.0, 0.0, 0.0);
   for (const TransferMethod m : {TransferMethod::autoclose, TransferMethod::transplant}) {
@@ -131,4 +137,47 @@ TEST_CASE("in the arm setting every method is reached by the arm or not planned,
   }
   // Without the arm setting nothing is reached by the arm.
   CHECK_FALSE(transfer(TransferMethod::transplant, bottle, g, TransferOptions{}).arm_joints);
+}
+
+TEST_CASE("in the arm setting the topological plan starts where the hand setting starts",
+          "[grasp][arm][transfer]") {
+  // The arm moves from its ready pose, by its inverse kinematics, to the hand setting's start
+  // (the SDH's grasp frame 3 cm short of the human's, the pre-shape) and the plan runs from there
+  // over all 14 joints: the same start relative to the object as the hand setting's, so the same
+  // windings at the plan's first step; the no_plan control is judged where that start puts the
+  // hand, as in the hand setting. Where the arm cannot be at the start, both fail saying so.
+  const GraspObject bottle = objects::bottle();
+  const auto hypotheses = box_hypotheses(bottle);
+  TransferOptions arm;
+  arm.arm_object = arm_setting_object_pose(bottle);
+  const TransferOptions hand;
+  int compared = 0, refused = 0;
+  for (std::size_t i = 0; i < hypotheses.size() && compared < 3; ++i) {
+    const HumanGrasp g = demonstrate(bottle, hypotheses[i], static_cast<int>(i));
+    if (!g.stable()) continue;
+    CAPTURE(i);
+    const SdhTransfer fixed = transfer(TransferMethod::topological, bottle, g, arm);
+    INFO(fixed.reason);
+    if (!fixed.planned && fixed.sweeps == 0) {
+      CHECK_THAT(fixed.reason, Catch::EndsWith(" at the plan's start"));
+      CHECK_THAT(transfer(TransferMethod::no_plan, bottle, g, arm).reason,
+                 Catch::EndsWith(" at the plan's start"));
+      ++refused;
+      continue;
+    }
+    const SdhTransfer turned = transfer(TransferMethod::topological, bottle, g, hand);
+    REQUIRE_FALSE(fixed.winding_plan.empty());
+    REQUIRE_FALSE(turned.winding_plan.empty());
+    CHECK((fixed.winding_plan.front() - turned.winding_plan.front()).norm() < 0.02);
+    CHECK(fixed.sweeps > 0);
+    const SdhTransfer still = transfer(TransferMethod::no_plan, bottle, g, arm);
+    const SdhTransfer still_hand = transfer(TransferMethod::no_plan, bottle, g, hand);
+    INFO(still.reason);
+    REQUIRE(still.planned);
+    CHECK((still.hand_pose.translation() - still_hand.hand_pose.translation()).norm() < 5e-3);
+    CHECK(still.sweeps == 0);
+    ++compared;
+  }
+  CHECK(compared == 3);
+  CHECK(refused > 0);
 }

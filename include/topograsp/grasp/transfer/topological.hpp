@@ -240,12 +240,24 @@ HandTransfer<M> topological_on_arm(const GraspObject& object, const Eigen::Isome
   gc.linear() =
       gc.linear() * palm_rotation(profile.axes, gripper_hand_axes.approach, gripper_hand_axes.up);
   if (options.arm_object) {
-    // The arm setting: the source's grasp frame where the fixed object puts it.
+    // The arm setting: the source's grasp frame where the fixed object puts it. The arm moves
+    // from its ready pose, by its inverse kinematics as every method's hand is reached, to the
+    // start of the hand setting (the hand's grasp frame on the source's, options.backoff short
+    // along the approach, the pre-shape), clear of the object, and the plan starts there.
     start.world_object = *options.arm_object;
     const Eigen::Isometry3d source_world = start.world_object * source_frame;
     start.approach = source_world.linear().col(2);
     start.axis_target = start.approach.normalized();
     start.grasp_point = source_world.translation();
+    const Vec<M.nq> pre = base_preshape<M>(options);
+    const Eigen::Isometry3d short_of =
+        Eigen::Translation3d(-options.backoff * source_frame.linear().col(2)) * source_frame;
+    const ArmReach reach = arm_reach(object, start.world_object,
+                                     root_for_grasp_frame<M>(short_of, pre), options.arm_ready);
+    run.r.source_winding = y;
+    run.r.arm_joints = reach.q_arm;
+    if (!reach.reached) return run.unplanned(reach.reason + " at the plan's start");
+    start.q0 << reach.q_arm, pre;
     return topological_plan<M>(object, start, y, reference, options, second, run);
   }
   start.approach = gc.linear().col(2);
