@@ -198,7 +198,8 @@ inline JournalEntry journal_entry(const Json& line, const std::filesystem::path&
 /// (and the first shard's "jobs"). Equal to the document of the unsharded run but for the
 /// timings ("plan_ms") and "jobs".
 /// \throws topograsp::invalid_argument naming "shards" if there are none, one is not a
-/// results.json of grasp_transfer, their configs differ in anything but "shard" and "jobs" (the
+/// results.json of grasp_transfer or was written with another results_schema_version, their
+/// configs differ in anything but "shard" and "jobs" (the
 /// message names the key), or the shards are not 1/N to N/N of one N, each once.
 [[nodiscard]] inline Json merge_results(const std::vector<Json>& shards) {
   if (shards.empty()) detail::throw_invalid_argument("shards", "expected at least one");
@@ -206,6 +207,17 @@ inline JournalEntry journal_entry(const Json& line, const std::filesystem::path&
     if (!s.is_object() || !s.contains("generator") || !s.at("generator").is_string() ||
         s.at("generator").as_string() != results_generator || !s.contains("config"))
       detail::throw_invalid_argument("shards", "expected results.json files of grasp_transfer");
+  for (const Json& s : shards) {
+    const int version = s.contains("schema_version") && s.at("schema_version").is_number()
+                            ? static_cast<int>(s.at("schema_version").as_number())
+                            : 1;
+    if (version != results_schema_version)
+      detail::throw_invalid_argument("shards", "a shard was written with results schema " +
+                                                   std::to_string(version) +
+                                                   " and this grasp_transfer writes " +
+                                                   std::to_string(results_schema_version) +
+                                                   ": run the shards again with this version");
+  }
   const Json& config = shards.front().at("config");
   int count = 0;
   std::vector<int> seen;

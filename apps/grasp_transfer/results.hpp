@@ -128,6 +128,60 @@ inline Eigen::Isometry3d pose_of(const Json& j) {
   return T;
 }
 
+// The joint names of model M, in configuration order.
+template <const auto& M>
+Json json_joint_names() {
+  Json j = Json::array();
+  for (int i = 0; i < M.nq; ++i) j.push_back(Json(M.joint_name(i)));
+  return j;
+}
+
+// The joint values q of model M by joint name (rad; m for a prismatic joint).
+template <const auto& M>
+Json json_joint_values(const Vec<M.nq>& q) {
+  Json j = Json::object();
+  for (int i = 0; i < M.nq; ++i) j.set(M.joint_name(i), q[i]);
+  return j;
+}
+
+// A configuration of hand M: its root link's pose in the object's frame and its joints by name.
+template <const auto& M>
+Json json_configuration(const Eigen::Isometry3d& root, const Vec<M.nq>& q) {
+  Json j = Json::object();
+  j.set("hand_pose", json_pose(root));
+  j.set("joints", json_joint_values<M>(q));
+  return j;
+}
+
+// A transfer's configurations: the pre-grasp (where the method put the hand before moving it in
+// to contact), the grasp (where closing started) and the closed hand (when closing ended, in the
+// object's frame then); null if nothing was placed.
+template <const auto& M>
+Json json_configurations(const HandTransfer<M>& t) {
+  if (!t.planned) return Json();
+  Json j = Json::object();
+  j.set("pregrasp", t.pregrasp ? json_configuration<M>(t.pregrasp->root, t.pregrasp->q) : Json());
+  j.set("grasp", json_configuration<M>(t.hand_pose, t.q_open));
+  j.set("closed", json_configuration<M>(t.object_pose.inverse() * t.hand_pose, t.q_closed));
+  return j;
+}
+
+// A planned motion: its step, the object's pose in its world, the joint names and each step's
+// configuration; null without one.
+inline Json json_motion(const std::optional<PlannedMotion>& m) {
+  if (!m) return Json();
+  Json j = Json::object();
+  j.set("time_step", m->time_step);
+  j.set("object_pose", json_pose(m->world_object));
+  Json names = Json::array();
+  for (std::string_view n : m->joints) names.push_back(Json(n));
+  j.set("joints", names);
+  Json q = Json::array();
+  for (const Eigen::VectorXd& step : m->q) q.push_back(json_vector(step));
+  j.set("q", q);
+  return j;
+}
+
 // An object's symmetry for results.json's config, and back.
 inline Json json_symmetry(const ObjectSymmetry& s) {
   Json j = Json::object();
@@ -356,6 +410,7 @@ inline void check_scene_names(const ExperimentOptions& options) {
   // The palm (the hand's root link) in the object's frame when closing ended, and the joints.
   rec.set("hand_pose", detail::json_pose(g.object_pose.inverse() * g.hand_pose));
   rec.set("joints", detail::json_vector(g.q));
+  rec.set("joint_names", detail::json_joint_names<models::human_hand>());
   detail::set_stability(rec, &g.stability);
   detail::set_second_and_quality(rec, g.second, &g.quality, second_name);
   out.push_back(std::move(rec));
@@ -380,6 +435,13 @@ inline void check_scene_names(const ExperimentOptions& options) {
     r.set("closing", detail::json_closing(t.planned ? &t.closing : nullptr));
     // The arm setting: the arm's joints that reach the hand (the best found when it cannot).
     r.set("arm_joints", t.arm_joints ? detail::json_vector(*t.arm_joints) : Json());
+    // What a robot executes: the object's pose in the arm's world (the plan's world, or the arm
+    // setting's), the hand's configurations, and the topological plan.
+    r.set("object_pose", t.motion              ? detail::json_pose(t.motion->world_object)
+                         : options.arm_setting ? detail::json_pose(arm_setting_object_pose(object))
+                                               : Json());
+    r.set("configurations", detail::json_configurations(t));
+    r.set("motion", detail::json_motion(t.motion));
     detail::set_stability(r, t.planned ? &t.stability : nullptr);
     detail::set_second_and_quality(r, t.planned ? t.second : std::nullopt,
                                    t.planned ? &t.quality : nullptr, second_name);
@@ -635,6 +697,7 @@ struct ObjectRecords {
     for (Json& rec : o.grasps) grasps.push_back(std::move(rec));
   Json doc = Json::object();
   doc.set("generator", std::string(results_generator));
+  doc.set("schema_version", results_schema_version);
   doc.set("config", config);
   doc.set("objects", out_objects);
   doc.set("overall", overall);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <topograsp/io/json.hpp>
+#include <topograsp/io/json_schema.hpp>
 #include <topograsp/io/keypoint_grasp.hpp>
 #include <topograsp/io/mesh_file.hpp>
 #include <topograsp/io/mesh_write.hpp>

@@ -10,7 +10,10 @@
 #include <catch2/catch.hpp>
 
 #include <grasp_transfer/experiment.hpp>
+#include <grasp_transfer/journal.hpp>
 #include <grasp_transfer/results.hpp>
+#include <topograsp/io/json_schema.hpp>
+#include <topograsp/io/ycb_objects.hpp>
 
 using namespace topograsp;
 
@@ -69,6 +72,18 @@ TEST_CASE("a small experiment: counts, schema and determinism", "[grasp][experim
 
   SECTION("results.json follows the documented schema") {
     const Json doc = Json::parse(results_json(config, results).dump(2));
+    // The schema shipped with the library (data/schemas/results.schema.json), by version.
+    const Json schema = Json::parse(
+        detail::read_text_file(data_directory() + "/schemas/results.schema.json", "schema"));
+    CHECK(validate_json(doc, schema).empty());
+    CHECK(doc.at("schema_version").as_number() == results_schema_version);
+    CHECK(schema.at("properties").at("schema_version").at("const").as_number() ==
+          results_schema_version);
+    // A record that breaks it is found, and where.
+    Json broken = doc;
+    const_cast<Json::Array&>(broken.at("grasps").as_array())[0].set("stable", "yes");
+    CHECK_FALSE(validate_json(broken, schema).empty());
+    CHECK_THAT(validate_json(broken, schema).front(), Catch::StartsWith("/grasps/0: "));
     REQUIRE(doc.at("config").is_object());
     CHECK(doc.at("config").at("objects").as_array().size() == 2);
     CHECK(doc.at("config").at("methods").as_array().size() == 3);
@@ -197,6 +212,37 @@ TEST_CASE("a small experiment: counts, schema and determinism", "[grasp][experim
         CHECK((g.at("planner").is_null() || g.at("planner").is_string()));
       // The arm's joints only in the arm setting (--setting arm).
       if (g.at("method").as_string() != "human") CHECK(g.at("arm_joints").is_null());
+      // What a robot executes: a placed transfer's configurations by the SDH's joint names, and
+      // the topological plan whose last step puts the hand at the pre-grasp.
+      if (g.at("method").as_string() != "human" && g.at("scene").is_string()) {
+        const Json& c = g.at("configurations");
+        for (const char* which : {"pregrasp", "grasp", "closed"}) {
+          const auto& joints = c.at(which).at("joints").as_object();
+          REQUIRE(joints.size() == 7u);
+          for (int i = 0; i < 7; ++i)
+            CHECK(joints[static_cast<std::size_t>(i)].first == models::schunk_sdh.joint_name(i));
+        }
+        const bool planned = g.at("method").as_string() == "topological";
+        CHECK(g.at("motion").is_null() != planned);
+        CHECK(g.at("object_pose").is_null() != planned);
+        if (planned) {
+          constexpr auto& A = OnArm<models::schunk_sdh>::model;
+          const Json& m = g.at("motion");
+          CHECK(m.at("q").as_array().size() == 41u);
+          CHECK(m.at("time_step").as_number() == Approx(2.0 / 40));
+          REQUIRE(m.at("joints").as_array().size() == 14u);
+          CHECK(m.at("joints").as_array()[0].as_string() == "arm_1");
+          Vec<14> q_end = detail::numbers(m.at("q").as_array().back(), 14, "q");
+          KinematicsData<A> d;
+          forward_kinematics(d, q_end);
+          const Eigen::Isometry3d root =
+              detail::pose_of(m.at("object_pose")).inverse() *
+              link_pose(d, A.find_link(models::schunk_sdh.links[0].spec.name.view()));
+          const Eigen::Isometry3d pre = detail::pose_of(c.at("pregrasp").at("hand_pose"));
+          CHECK((root.translation() - pre.translation()).norm() < 1e-6);
+          CHECK((root.linear() - pre.linear()).norm() < 1e-6);
+        }
+      }
       // Every test's record when the grasp was simulated; stable iff all but the hard shake
       // passed, and then the reason is empty.
       const auto& tests = g.at("tests").as_array();

@@ -172,6 +172,24 @@ template <const auto& M>
   return q;
 }
 
+/// A grasp of hand \p M: its root link's pose in the object frame and its joints.
+template <const auto& M>
+  requires HandModel<decltype(M)>
+struct HandGrasp {
+  Eigen::Isometry3d root = Eigen::Isometry3d::Identity();
+  Vec<M.nq> q = Vec<M.nq>::Zero();
+};
+
+/// A planned motion (the topological methods): the configurations of the model the plan moved (on
+/// the arm: the arm's joints, then the hand's; on a free base: the base's, then the hand's), one
+/// per step, time_step apart, in a world where the object stands at world_object.
+struct PlannedMotion {
+  std::vector<std::string_view> joints;  ///< the names of the configuration's entries
+  std::vector<Eigen::VectorXd> q;        ///< the plan's T + 1 configurations (rad; m, prismatic)
+  double time_step = 0.0;                ///< s
+  Eigen::Isometry3d world_object = Eigen::Isometry3d::Identity();  ///< the object in that world
+};
+
 /// A grasp of hand \p M transferred from another hand: where the hand ended (object frame), how it
 /// was planned, the stability suite. SdhTransfer (transfer.hpp) is the SDH's.
 template <const auto& M>
@@ -185,8 +203,13 @@ struct HandTransfer {
   std::string reason;  ///< why not planned, or the planner's termination
   Eigen::Isometry3d hand_pose = Eigen::Isometry3d::Identity();  ///< the root link, object frame
   Vec<M.nq> q_open = Vec<M.nq>::Zero();                         ///< the joints before closing
-  Vec<M.nq> q_closed = Vec<M.nq>::Zero();                       ///< when closing ended
-  ClosingRecord closing;  ///< what closing did (the object's motion, contacts)
+  /// The hand (root link, object frame, and joints) where the method put it before moving it in
+  /// to contact along its approach; unset when it was not placed.
+  std::optional<HandGrasp<M>> pregrasp;
+  /// The topological methods' plan (the no_plan control has none); unset for the baselines.
+  std::optional<PlannedMotion> motion;
+  Vec<M.nq> q_closed = Vec<M.nq>::Zero();  ///< when closing ended
+  ClosingRecord closing;                   ///< what closing did (the object's motion, contacts)
   /// w of the hand's curves after closing, around the centre of mass (topological: around its
   /// winding reference).
   Vec<curves> winding = Vec<curves>::Zero();
@@ -211,14 +234,6 @@ struct HandTransfer {
   /// q_closed, the grasp that the stability suite started from.
   Eigen::Isometry3d object_pose = Eigen::Isometry3d::Identity();
   [[nodiscard]] bool stable() const noexcept { return planned && stability.stable; }
-};
-
-/// A grasp of hand \p M: its root link's pose in the object frame and its joints.
-template <const auto& M>
-  requires HandModel<decltype(M)>
-struct HandGrasp {
-  Eigen::Isometry3d root = Eigen::Isometry3d::Identity();
-  Vec<M.nq> q = Vec<M.nq>::Zero();
 };
 
 /// The human demonstration \p g as a source grasp (its palm pose and joints when closing ended).

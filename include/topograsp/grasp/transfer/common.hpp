@@ -140,12 +140,13 @@ struct TransferRun {
     simulate_hand_grasp<M>(object, root, q, sim, second, r);
     return std::move(r);
   }
-  // placed_for_closing, the clock stopped, then judge(); unplanned with its reason if it cannot be
-  // placed.
+  // placed_for_closing (root and q the pre-grasp), the clock stopped, then judge(); unplanned with
+  // its reason if it cannot be placed.
   HandTransfer<M> place_and_judge(const GraspObject& object, const Eigen::Isometry3d& root,
                                   const Vec<M.nq>& q, const Vec3& approach, double advance,
                                   const GraspSimOptions& sim, const SecondJudge<M>& second,
                                   std::string_view unplaced) {
+    r.pregrasp = HandGrasp<M>{root, q};
     std::string why;
     const auto placed =
         placed_for_closing<M>(object, root, q, approach, advance, sim, unplaced, why);

@@ -162,6 +162,11 @@ HandTransfer<M> topological_plan(const GraspObject& object, const TopologicalSta
       AicoWorkspace ws(problem);
       const AicoResult<A.nq> plan = solve(problem, ws);
       if (record_plan(problem, plan, out)) q_end = plan.q.back();
+      PlannedMotion& motion = out.motion.emplace();
+      for (int i = 0; i < A.nq; ++i) motion.joints.push_back(A.joint_name(i));
+      for (const Vec<A.nq>& q : plan.q) motion.q.emplace_back(q);
+      motion.time_step = problem.step_length();
+      motion.world_object = start.world_object;
     } else {
       out.reason = "no plan (the no_plan control): judged at its start";
     }
@@ -172,6 +177,7 @@ HandTransfer<M> topological_plan(const GraspObject& object, const TopologicalSta
     const Vec3 along =
         start.along_source ? start.approach : Vec3(root.linear() * grasp_approach<M>(q_hand));
     std::string why;
+    out.pregrasp = HandGrasp<M>{root, q_hand};
     const auto placed =
         placed_for_closing<M>(object, root, q_hand, along, options.final_approach, options.sim,
                               "the planned hand penetrates the object", why);
