@@ -19,13 +19,16 @@ namespace {
 constexpr const char* usage =
     "usage: topograsp_import_hand FILE --out HEADER --namespace NS [--root NAME]\n"
     "                             [--mesh-dir DIR] [--skip-missing-meshes] [--comment TEXT]...\n"
+    "                             [--description JSON]\n"
     "Reads the URDF or MJCF FILE and writes HEADER: its links (with their joints), collision\n"
     "shapes and frames (MJCF sites) as the constexpr arrays NS::links, NS::shapes and NS::frames\n"
-    "for topograsp::make_model().\n"
+    "for topograsp::make_model(); with --description, also NS::model, the hand it describes.\n"
     "  --root NAME            start at the link (URDF) or body (MJCF) NAME: a hand cut off an arm\n"
     "  --mesh-dir DIR         look mesh files up in DIR (default: beside FILE; MJCF: its meshdir)\n"
     "  --skip-missing-meshes  leave out collision meshes that cannot be read (listed as notes)\n"
     "  --comment TEXT         a line at the top of HEADER (where FILE comes from, its licence)\n"
+    "  --description JSON     the hand description file: fingers, thumb, palm centre, closing\n"
+    "                         directions, motors, held joints (docs/models.md)\n"
     "Exit status: 0 written, 1 the file cannot be imported, 2 a wrong command line.\n";
 
 int wrong(const std::string& why) {
@@ -45,7 +48,7 @@ bool same_file(const std::string& a, const std::string& b) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string file, out, ns;
+  std::string file, out, ns, description;
   std::vector<std::string> comments;
   topograsp::ImportOptions options;
   for (int i = 1; i < argc; ++i) {
@@ -68,6 +71,8 @@ int main(int argc, char** argv) {
       ok = value(options.root);
     } else if (a == "--mesh-dir") {
       ok = value(options.mesh_dir);
+    } else if (a == "--description") {
+      ok = value(description);
     } else if (a == "--comment") {
       ok = value(comments.emplace_back());
     } else if (a == "--skip-missing-meshes") {
@@ -100,8 +105,14 @@ int main(int argc, char** argv) {
   std::string header;
   std::size_t links = 0, shapes = 0, frames = 0, notes = 0;
   try {
-    const topograsp::ImportedHand hand = topograsp::import_hand_file(file, options);
-    header = topograsp::model_header(hand, ns, comments);
+    topograsp::ImportedHand hand = topograsp::import_hand_file(file, options);
+    if (description.empty()) {
+      header = topograsp::model_header(hand, ns, comments);
+    } else {
+      const topograsp::HandDescription d = topograsp::describe_hand_file(hand, description);
+      topograsp::detail::check_importable(hand);  // what the description added, too
+      header = topograsp::model_header(hand, ns, comments, &d);
+    }
     links = hand.links.size();
     shapes = hand.shapes.size();
     frames = hand.frames.size();

@@ -1,40 +1,23 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Bring your own hand (docs/models.md): a gripper from its MJCF file (gripper.xml, imported at
-// build time by the CMake function topograsp_import_hand() into gripper_file.hpp), the few lines
-// the file cannot say (which chains are the fingers and the thumb, which way each joint closes, the
-// motors' speed), then what the library does with any hand: its kinematics, its hand curves'
-// windings around a ball, the grasp closed by its motors in the built-in simulation and judged by
-// the stability suite. Exit status 0 if the gripper holds the ball.
+// Bring your own hand (docs/models.md): a gripper from its MJCF file (gripper.xml) and its hand
+// description (gripper.json: which chains are the fingers and the thumb, the palm centre, which
+// way each joint closes, the motors' speed, which the MJCF file cannot say), imported at build time
+// by the CMake function topograsp_import_hand() into gripper_file.hpp as the model gripper::model,
+// checked while it compiles like a shipped model; then what the library does with any hand: its
+// kinematics, its hand curves' windings around a ball, the grasp closed by its motors in the
+// built-in simulation and judged by the stability suite. Exit status 0 if the gripper holds the
+// ball.
 #include <cstdio>
 
 #include <topograsp/evaluation/close_hand.hpp>
 #include <topograsp/evaluation/stability_suite.hpp>
 #include <topograsp/task/winding_descriptor.hpp>
 
-#include "gripper_file.hpp"  // gripper::links, gripper::shapes, gripper::frames (the file's)
+#include "gripper_file.hpp"  // gripper::model, from gripper.xml and gripper.json
 
 using namespace topograsp;
 
-// What the file cannot say: every finger joint closes by increasing; the motors' speed limit (the
-// file gives their torque, 1 N m, but no speed). Checked while it compiles, like a shipped model.
-constexpr auto gripper_links = [] {
-  auto links = with_closing(gripper::links, {{"finger_1_proximal", 1},
-                                             {"finger_1_distal", 1},
-                                             {"finger_2_proximal", 1},
-                                             {"finger_2_distal", 1},
-                                             {"thumb_proximal", 1},
-                                             {"thumb_distal", 1}});
-  for (LinkSpec& l : links)
-    if (l.type != JointType::fixed) l.velocity = 3.0;  // rad/s
-  return links;
-}();
-
-constexpr auto my_gripper =
-    make_model("my_gripper", gripper_links, gripper::shapes, gripper::frames,
-               hand("palm_centre",  // the file's sites name the palm centre and the tips
-                    finger("finger_1", {"finger_1_proximal", "finger_1_distal", "finger_1_tip"}),
-                    finger("finger_2", {"finger_2_proximal", "finger_2_distal", "finger_2_tip"}),
-                    thumb("thumb", {"thumb_proximal", "thumb_distal", "thumb_tip"})));
+constexpr auto& my_gripper = gripper::model;
 
 int main() {
   static_assert(my_gripper.nq == 6);

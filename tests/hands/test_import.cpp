@@ -9,6 +9,7 @@
 #include <fstream>
 #include <random>
 #include <string>
+#include <utility>
 
 #include <catch2/catch.hpp>
 #include <topograsp/io/hand_import.hpp>
@@ -17,7 +18,8 @@
 
 #include "support/random.hpp"
 #include "support/throws.hpp"
-#include "three_finger_mjcf.hpp"  // made by topograsp_import_hand() (tests/CMakeLists.txt)
+#include "three_finger_described.hpp"  // the URDF hand with three_finger.json
+#include "three_finger_mjcf.hpp"       // made by topograsp_import_hand() (tests/CMakeLists.txt)
 #include "three_finger_urdf.hpp"
 
 #ifdef TOPOGRASP_HAVE_MUJOCO
@@ -636,4 +638,158 @@ TEST_CASE("hands: text from the user or the file cannot break the generated head
     CHECK(meant);
   }
   CHECK(lines > 10);
+}
+
+namespace {
+
+// The message of the import_error that describing the URDF hand with \p text throws.
+std::string description_failure(const std::string& text) {
+  ImportedHand h = import_hand_file(data_dir + "/three_finger.urdf");
+  try {
+    (void)describe_hand(h, Json::parse(text), "hand.json");
+  } catch (const import_error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// A description of the URDF hand with \p extra fields (JSON members, each followed by a comma).
+std::string described(const std::string& extra) {
+  return "{" + extra +
+         R"("name": "h", "palm_centre": "palm", "fingers": [{"name": "index", "points": )"
+         R"(["index_base", "index_tip"]}], "thumb": {"name": "thumb", "points": ["thumb_base", )"
+         R"("thumb_dist"]}})";
+}
+
+}  // namespace
+
+TEST_CASE("hands: a description file makes the model that C++ lines make") {
+  // three_finger.json says what urdf_hand's C++ lines say: the same model, built at build time.
+  constexpr auto& model = th::described::model;
+  STATIC_REQUIRE(model.nq == urdf_hand.nq);
+  STATIC_REQUIRE(model.n_fingers == urdf_hand.n_fingers);
+  STATIC_REQUIRE(model.name.view() == "three_finger_urdf");
+  for (std::size_t i = 0; i < model.links.size(); ++i) {
+    CAPTURE(i);
+    CHECK(model.links[i].spec == urdf_hand.links[i].spec);
+  }
+  REQUIRE(model.frames.size() == urdf_hand.frames.size());
+  KinematicsData<model> d;
+  KinematicsData<urdf_hand> e;
+  const Vec<model.nq> q = Vec<model.nq>::Constant(0.2);
+  forward_kinematics(d, q);
+  forward_kinematics(e, Vec<urdf_hand.nq>(q));
+  for (const char* f : {"palm_centre", "thumb_tip", "index_tip"}) {
+    CAPTURE(f);
+    const auto i = static_cast<std::size_t>(model.find_frame(f));
+    const auto j = static_cast<std::size_t>(urdf_hand.find_frame(f));
+    CHECK((d.frame_p[i] - e.frame_p[j]).norm() < 1e-15);
+  }
+  // The header says what the description did, and what the file lacks.
+  ImportedHand h = import_hand_file(data_dir + "/three_finger.urdf");
+  CHECK(has_note(h, "the link index_mid has no <inertial>: it is massless"));
+  const HandDescription desc = describe_hand_file(h, data_dir + "/three_finger.json");
+  CHECK(desc.fingers.size() == 1);
+  const std::string header = model_header(h, "a", {}, &desc);
+  CHECK_THAT(header, Catch::Contains("inline constexpr auto model = make_model(") &&
+                         Catch::Contains(".closes(1") &&
+                         Catch::Contains("#include <topograsp/model/model.hpp>"));
+}
+
+TEST_CASE("hands: a description holds joints still, fills motors and gives links mass") {
+  ImportedHand h = import_hand_file(data_dir + "/three_finger.urdf");
+  const ImportedHand before = h;
+  const LinkSpec rot = link_named(h, "thumb_base");  // the continuous joint thumb_rot, about z
+  (void)describe_hand(
+      h,
+      Json::parse(described(R"("joints": {"thumb_rot": {"hold": 0.3}, "index_abd": {"closes": -1, )"
+                            R"("effort": 0.7}}, "defaults": {"velocity": 4, "density": 1000}, )")),
+      "hand.json");
+  // Held: a fixed joint whose origin is the joint's frame turned by 0.3 rad, noted.
+  const LinkSpec& held = link_named(h, "thumb_base");
+  CHECK(held.type == JointType::fixed);
+  const Eigen::Isometry3d expected =
+      rot.origin.isometry() * Eigen::AngleAxisd(0.3, Vec3(rot.axis[0], rot.axis[1], rot.axis[2]));
+  CHECK((held.origin.isometry().matrix() - expected.matrix()).norm() < 1e-12);
+  CHECK(has_note(h, "the joint thumb_base is held at 0.3 by the description (hand.json)"));
+  // A joint named by the file's name closes and gets its motor; the defaults fill the rest.
+  const LinkSpec& abd = link_named(h, "index_base");
+  CHECK(abd.closing == -1.0);
+  CHECK(abd.effort == 0.7);
+  CHECK(abd.velocity == 2.0);                         // the file's
+  CHECK(link_named(h, "index_mid").velocity == 3.0);  // the file's
+  ImportedHand unheld = import_hand_file(data_dir + "/three_finger.urdf");
+  (void)describe_hand(unheld, Json::parse(described(R"("defaults": {"velocity": 4}, )")),
+                      "hand.json");
+  CHECK(link_named(unheld, "thumb_base").velocity == 4.0);  // the file gives none
+  CHECK(link_named(unheld, "index_mid").velocity == 3.0);
+  CHECK(link_named(unheld, "index_dist").velocity == 0.0);  // mimic: driven by its source
+  // A link without mass gets its collision shapes' at the density, noted; the others keep theirs.
+  const LinkSpec& mid = link_named(h, "index_mid");
+  CHECK(link_named(before, "index_mid").mass == 0.0);
+  double volume = 0.0;
+  for (const ShapeSpec& sh : h.shapes)
+    if (sh.link == mid.name) volume += shape_mass_properties(sh, 1.0).mass;
+  CHECK(volume > 0.0);
+  CHECK(mid.mass == Approx(1000.0 * volume));
+  CHECK(has_note(h, "the link index_mid has no mass in three_finger.urdf"));
+  CHECK(link_named(h, "palm").mass == link_named(before, "palm").mass);
+}
+
+TEST_CASE("hands: a description that does not fit its hand file says where and what to write") {
+  CHECK(description_failure(described("")) == "(no error)");
+  CHECK_THAT(description_failure(described(R"("fingerz": [], )")),
+             Catch::StartsWith("hand.json: fingerz: unknown key (known: name, palm_centre, "));
+  CHECK_THAT(
+      description_failure(R"({"name": "h", "palm_centre": "palm", "fingers": [{"name": "i", )"
+                          R"("points": ["index_base", "index_tipp"]}], "thumb": {"name": "t", )"
+                          R"("points": ["thumb_base", "thumb_dist"]}})"),
+      Catch::StartsWith("hand.json: fingers[0].points[1]: \"index_tipp\" is no link or frame of "
+                        "three_finger.urdf (links: base, palm, index_base,"));
+  CHECK_THAT(description_failure(R"({"name": "h", "palm_centre": "palm", "fingers": [{"name": )"
+                                 R"("i", "points": ["index_base", "index_tip"]}]})"),
+             Catch::StartsWith("hand.json: thumb: missing: a hand needs a thumb"));
+  CHECK_THAT(description_failure(R"({"name": "h", "palm_centre": "palm", "thumb": {"name": "t", )"
+                                 R"("points": ["thumb_base", "thumb_dist"]}})"),
+             Catch::StartsWith("hand.json: fingers: expected a list of at least one finger"));
+  CHECK_THAT(description_failure(R"({"name": "h", "palm_centre": "centre", "fingers": [{"name": )"
+                                 R"("i", "points": ["index_base", "index_tip"]}], "thumb": )"
+                                 R"({"name": "t", "points": ["thumb_base", "thumb_dist"]}})"),
+             Catch::StartsWith("hand.json: palm_centre: \"centre\" is no link or frame of "
+                               "three_finger.urdf (add it under \"frames\""));
+  // Each field that does not fit the URDF hand, and the start of what the refusal says.
+  const std::pair<const char*, const char*> cases[] = {
+      {R"("joints": {"palm_mount": {"closes": 1}}, )",
+       "hand.json: joints.palm_mount: \"palm_mount\" is a fixed joint in three_finger.urdf: only "
+       "a moving joint closes"},
+      {R"("joints": {"wrist": {"closes": 1}}, )",
+       "hand.json: joints.wrist: no joint or link \"wrist\" in three_finger.urdf (links: "},
+      {R"("joints": {"index_abd": {"closes": 0.5}}, )",
+       "hand.json: joints.index_abd.closes: expected 1 (increasing closes), -1 (decreasing "
+       "closes) or 0"},
+      {R"("joints": {"thumb_slide": {"hold": 0.5}}, )",
+       "hand.json: joints.thumb_slide.hold: expected a number from 0 to 0.01"},
+      {R"("joints": {"index_pip": {"hold": 0.1}}, )",
+       "hand.json: joints.index_pip.hold: the joint \"index_dist\" follows it (a mimic joint)"},
+      {R"("joints": {"index_abd": {"hold": 0, "closes": 1}}, )",
+       "hand.json: joints.index_abd: a held joint does not close and has no motor"},
+      {R"("frames": [{"name": "tip", "link": "nolink"}], )",
+       "hand.json: frames[0].link: no link \"nolink\" in three_finger.urdf"},
+      {R"("frames": [{"name": "palm", "link": "palm"}], )",
+       "hand.json: frames[0].name: \"palm\" is already a frame or link"},
+      {R"("frames": [{"name": "c", "link": "palm", "rpy": [0, 1]}], )",
+       "hand.json: frames[0].rpy: expected 3 numbers"},
+      {R"("defaults": {"density": -1}, )",
+       "hand.json: defaults.density: expected a number from 1 to"},
+  };
+  for (const auto& [field, message] : cases) {
+    CAPTURE(field);
+    CHECK_THAT(description_failure(described(field)), Catch::StartsWith(message));
+  }
+  CHECK_THAT(description_failure("[1]"), Catch::StartsWith("hand.json: expected a JSON object"));
+  ImportedHand h = import_hand_file(data_dir + "/three_finger.urdf");
+  CHECK_THROWS_WITH(describe_hand_file(h, data_dir + "/no_such.json"),
+                    Catch::EndsWith("no_such.json: cannot be opened"));
+  CHECK_THROWS_WITH(describe_hand_file(h, data_dir + "/three_finger.urdf"),
+                    Catch::Contains("three_finger.urdf: not JSON: "));
 }

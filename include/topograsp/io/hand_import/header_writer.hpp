@@ -19,6 +19,7 @@
 
 #include <topograsp/core/error.hpp>
 #include <topograsp/io/hand_import/common.hpp>
+#include <topograsp/io/hand_import/description.hpp>
 #include <topograsp/model/spec.hpp>
 
 namespace topograsp {
@@ -110,13 +111,15 @@ inline std::string header_text(std::string_view text, HeaderText where,
 /// The C++ header that declares \p hand's links, shapes and frames as constexpr arrays in
 /// namespace \p ns (`links`, `shapes`, `frames`, for make_model()), with \p comments (one line
 /// each: where the file comes from, its licence), the joint names and the import's notes as
-/// comments. Names, the file's name and paths are written through detail::header_text() (control
-/// characters escaped), so the header always compiles.
+/// comments; with \p description (describe_hand(), applied to \p hand) also `model`, the hand
+/// it describes, made by make_model(). Names, the file's name and paths are written through
+/// detail::header_text() (control characters escaped), so the header always compiles.
 /// \throws topograsp::invalid_argument naming "ns" if \p ns is not a C++ namespace name
 /// (identifiers joined by ::), naming "comments" if a comment has a control character (a line
 /// break would end the comment).
 [[nodiscard]] inline std::string model_header(const ImportedHand& hand, std::string_view ns,
-                                              const std::vector<std::string>& comments = {}) {
+                                              const std::vector<std::string>& comments = {},
+                                              const HandDescription* description = nullptr) {
   bool ok = !ns.empty();
   for (std::size_t i = 0, start = 0; ok && i <= ns.size(); ++i) {
     if (i < ns.size() && ns[i] != ':') continue;
@@ -256,7 +259,8 @@ inline std::string header_text(std::string_view text, HeaderText where,
        std::string(to_string(hand.format)) + "). Do not edit: edit the file and import it again.\n";
   for (const std::string& n : hand.notes)
     s += "// Note: " + header_text(n, HeaderText::comment) + "\n";
-  s += "#pragma once\n\n#include <topograsp/model/spec.hpp>\n\nnamespace " + std::string(ns) +
+  s += std::string("#pragma once\n\n#include <topograsp/model/") +
+       (description != nullptr ? "model.hpp" : "spec.hpp") + ">\n\nnamespace " + std::string(ns) +
        " {\n\nusing namespace topograsp;\n\n";
   s += "/// The links of " + file + ", parents first; each moving link carries its joint.\n";
   s += "inline constexpr auto links = topograsp::links(";
@@ -294,6 +298,11 @@ inline std::string header_text(std::string_view text, HeaderText where,
       append_number(s, l.armature);
       s += ")";
     }
+    if (l.closing != 0.0) {  // from a hand description: the file cannot say it
+      s += ".closes(";
+      append_number(s, l.closing);
+      s += ")";
+    }
     if (l.mass != 0.0) {
       s += ".inertial(";
       append_number(s, l.mass);
@@ -314,7 +323,28 @@ inline std::string header_text(std::string_view text, HeaderText where,
     s += i == 0 ? "\n    " : ",\n    ";
     s += "frame(" + quoted(f.name) + ", " + quoted(f.link) + ", " + pose_code(f.offset) + ")";
   }
-  s += ");\n\n}  // namespace " + std::string(ns) + "\n";
+  s += ");\n";
+  if (description != nullptr) {
+    const auto text = [](const std::string& n) {
+      return '"' + header_text(n, HeaderText::string) + '"';
+    };
+    const auto chain = [&](const char* kind, const HandChain& c) {
+      std::string out = std::string(kind) + "(" + text(c.name) + ", {";
+      for (std::size_t i = 0; i < c.points.size(); ++i)
+        out += (i == 0 ? "" : ", ") + text(c.points[i]);
+      return out + "})";
+    };
+    s += "\n/// The hand that " +
+         header_text(std::filesystem::path(description->source).filename().string(),
+                     HeaderText::comment) +
+         " describes: checked by make_model() while it compiles.\ninline constexpr auto model = "
+         "make_model(\n    " +
+         text(description->name) + ", links, shapes, frames,\n    hand(" +
+         text(description->palm_centre);
+    for (const HandChain& f : description->fingers) s += ",\n         " + chain("finger", f);
+    s += ",\n         " + chain("thumb", description->thumb) + "));\n";
+  }
+  s += "\n}  // namespace " + std::string(ns) + "\n";
   return s;
 }
 

@@ -182,6 +182,11 @@ inline ImportedHand import_urdf(const XmlDocument& doc, const ImportOptions& opt
       const Vec3 c = urdf_origin(im, *inertial).translation();
       l.com = {c.x(), c.y(), c.z()};
       if (l.mass < 0.0) im.fail(*inertial, "negative mass");
+    } else if (child(link, "collision") != nullptr) {
+      // MJCF derives a body's mass from its geoms; URDF has no such rule, so say it.
+      out.notes.push_back("the link " + std::string(l.name.view()) +
+                          " has no <inertial>: it is massless (a hand description's "
+                          "defaults.density gives it the mass of its collision shapes)");
     }
     const Name link_name = l.name;
     out.links.push_back(l);
