@@ -8,9 +8,11 @@
 // built-in simulation and judged by the stability suite. Exit status 0 if the gripper holds the
 // ball.
 #include <cstdio>
+#include <string>
 
 #include <topograsp/evaluation/close_hand.hpp>
 #include <topograsp/evaluation/stability_suite.hpp>
+#include <topograsp/grasp/check_hand.hpp>
 #include <topograsp/task/winding_descriptor.hpp>
 
 #include "gripper_file.hpp"  // gripper::model, from gripper.xml and gripper.json
@@ -21,6 +23,15 @@ constexpr auto& my_gripper = gripper::model;
 
 int main() {
   static_assert(my_gripper.nq == 6);
+  // First the self-check every new hand should pass before any transfer: the palm centre frame's
+  // axes, the closing directions, motors and masses, and the hand closed on a ball and a cylinder
+  // at its palm (docs/models.md, "Check a hand before transferring").
+  const HandCheck check = check_hand<my_gripper>();
+  for (const std::string& p : check.problems) std::printf("problem: %s\n", p.c_str());
+  for (const HandTrial& t : check.trials)
+    std::printf("check_hand: %-8s %s%s%s\n", t.object.c_str(), t.stable ? "held" : "not held",
+                t.stable ? "" : ": ", t.reason.c_str());
+  if (!check.ok()) return 1;
   // Kinematics: the tips with the hand open.
   const Vec<my_gripper.nq> open = Vec<my_gripper.nq>::Zero();
   KinematicsData<my_gripper> d;

@@ -3,6 +3,7 @@
 /// The grasp module: objects, box hypotheses, human demonstrations and the transfer methods.
 #pragma once
 
+#include <topograsp/grasp/check_hand.hpp>
 #include <topograsp/grasp/grasp_identity.hpp>
 #include <topograsp/grasp/hand_axes.hpp>
 #include <topograsp/grasp/hand_grasp.hpp>
