@@ -458,9 +458,10 @@ options:
                    torques whose contact forces balance on the object)
   --setting S      hand (default: every hand placed and judged without the arm; the topological
                    plan runs on the arm with the object turned to meet it) or arm (the paper's
-                   setting: each object fixed in front of the arm, the plan starting at the arm's
-                   ready pose, every method's hand reached by the arm by inverse kinematics,
-                   clear of the object, or failed: docs/transfer.md, "The arm setting")
+                   setting: each object fixed in front of the arm, the arm moved from its ready
+                   pose to the plan's start and every method's hand reached by the arm by
+                   inverse kinematics, clear of the object, or failed: docs/transfer.md, "The
+                   arm setting")
   --winding-reference R  where the windings are taken: centre_of_mass (default, the paper)
                    or nearest_point (the object's point nearest the human's grasp centre)
   --friction MU    one Coulomb coefficient for every hand-object pair, in (0, 10], for a friction

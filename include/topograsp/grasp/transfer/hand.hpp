@@ -124,7 +124,9 @@ template <const auto& Target, const auto& Source>
 /// variants (closed_windings included): the paper's planner for any hand. The source's windings
 /// around the winding reference become Target's winding targets (winding_targets); the object is
 /// placed so that the source's grasp frame maps onto Target's at the arm's ready pose
-/// (options.arm_ready, base_preshape) pushed out by options.backoff; AICO plans the arm and the
+/// (options.arm_ready, base_preshape) pushed out by options.backoff (in the arm setting,
+/// options.arm_object, the object stays where it is and the arm reaches that start by inverse
+/// kinematics); AICO plans the arm and the
 /// hand with the tasks of transfer_topological; the final hand, without the arm, moves on until
 /// contact (at most final_approach), closes and is judged (with \p second if set).
 ///

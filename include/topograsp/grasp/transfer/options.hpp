@@ -27,12 +27,13 @@ struct TransferOptions {
   /// The arm's start configuration (rad): elbow bent, the hand pointing forward.
   Vec<7> arm_ready = (Vec<7>() << 0.0, 0.5, 0.0, 1.0, 0.0, 0.5, 0.0).finished();
   /// The object is placed so that the human grasp centre lies this far beyond the SDH's grasp
-  /// centre at the start, along the approach (m): the plan has to move in. Not used in the arm
-  /// setting (arm_object), where the plan starts at the ready pose.
+  /// centre at the start, along the approach (m): the plan has to move in. In the arm setting
+  /// (arm_object) the arm reaches the same start relative to the object.
   double backoff = 0.03;
   /// The arm setting (the paper's; docs/transfer.md, "The arm setting"): the object fixed at this
   /// pose in the arm's world (arm_setting_object_pose()) instead of turned to meet the hand. The
-  /// topological plan on the arm then starts at the ready pose (arm_ready, the pre-shape) with
+  /// topological plan on the arm then starts where the arm, moved from its ready pose (arm_ready)
+  /// by arm_reach(), puts the hand at the hand setting's start (backoff short, the pre-shape), with
   /// the object where it is, and every method's hand, when it is placed for closing, must be
   /// reached by the arm without the arm entering the object (arm_reach(): inverse kinematics
   /// from the ready pose); a hand the arm cannot reach is not planned, and reason says why.

@@ -228,8 +228,9 @@ HandTransfer<M> topological_plan(const GraspObject& object, const TopologicalSta
 // (object frame) and windings y around reference (object frame) given: the object placed (turned)
 // so that the source's grasp frame maps onto M's at the ready pose (options.arm_ready,
 // base_preshape), pushed out by options.backoff, or in the arm setting (options.arm_object) left
-// where it is, the plan starting at the ready pose; then topological_plan; the final hand moves on
-// along its own approach.
+// where it is, the plan starting where the arm reaches the same start relative to the object
+// (arm_reach() from the ready pose; not planned, saying why, if it cannot); then
+// topological_plan; the final hand moves on along its own approach.
 template <const auto& M>
 HandTransfer<M> topological_on_arm(const GraspObject& object, const Eigen::Isometry3d& source_frame,
                                    const Vec<hand_curve_count<M>>& y, const Vec3& reference,
