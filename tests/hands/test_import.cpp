@@ -679,11 +679,14 @@ TEST_CASE("hands: a description file makes the model that C++ lines make") {
   const Vec<model.nq> q = Vec<model.nq>::Constant(0.2);
   forward_kinematics(d, q);
   forward_kinematics(e, Vec<urdf_hand.nq>(q));
-  for (const char* f : {"palm_centre", "thumb_tip", "index_tip"}) {
+  for (int i = 0; i < static_cast<int>(model.links.size()); ++i)
+    CHECK((link_pose(d, i).matrix() - link_pose(e, i).matrix()).norm() < 1e-15);
+  for (const char* f : {"palm_centre", "thumb_tip"}) {  // the frames the description adds
     CAPTURE(f);
-    const auto i = static_cast<std::size_t>(model.find_frame(f));
-    const auto j = static_cast<std::size_t>(urdf_hand.find_frame(f));
-    CHECK((d.frame_p[i] - e.frame_p[j]).norm() < 1e-15);
+    const int i = model.find_frame(f);
+    REQUIRE(i >= 0);
+    CHECK((frame_pose(d, i).matrix() - frame_pose(e, urdf_hand.find_frame(f)).matrix()).norm() <
+          1e-15);
   }
   // The header says what the description did, and what the file lacks.
   ImportedHand h = import_hand_file(data_dir + "/three_finger.urdf");
