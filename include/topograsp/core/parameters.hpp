@@ -17,6 +17,7 @@
 #include <variant>
 
 #include <topograsp/core/error.hpp>
+#include <topograsp/core/number_text.hpp>
 
 namespace topograsp {
 
@@ -59,23 +60,12 @@ struct Parameter {
 template <class Options, std::size_t N>
 using ParameterTable = std::array<Parameter<Options>, N>;
 
-namespace detail {
-
-// "%g" of v ("inf" for infinity).
-inline std::string parameter_number(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%g", v);
-  return b;
-}
-
-}  // namespace detail
-
 /// The range of \p p as messages and --help print it: "[0, 0.3]", "(0, 1]", "[1, 1e+06]",
 /// "(0, inf)".
 template <class Options>
 [[nodiscard]] std::string parameter_range(const Parameter<Options>& p) {
-  return (p.above_min ? "(" : "[") + detail::parameter_number(p.min) + ", " +
-         detail::parameter_number(p.max) + (std::isinf(p.max) ? ")" : "]");
+  return (p.above_min ? "(" : "[") + detail::number_text(p.min) + ", " +
+         detail::number_text(p.max) + (std::isinf(p.max) ? ")" : "]");
 }
 
 /// Checks \p value against \p p's range (NaN, infinity and, for an int field, a fraction are
@@ -90,7 +80,7 @@ void check_parameter(const Parameter<Options>& p, double value, std::string_view
     detail::throw_invalid_argument(
         std::string(prefix) + std::string(p.name),
         "must be in " + parameter_range(p) + (p.integer() ? ", a whole number" : "") + " (" +
-            std::string(p.meaning) + "), got " + detail::parameter_number(value));
+            std::string(p.meaning) + "), got " + detail::number_text(value));
 }
 
 /// Checks every field of \p table in \p options (check_parameter), in table order; messages name
@@ -143,7 +133,7 @@ template <class Options, std::size_t N>
   std::string text = line;
   for (const Parameter<Options>& p : table) {
     std::snprintf(line, sizeof line, "  %-24s %-9s %-12s %s\n", std::string(p.name).c_str(),
-                  detail::parameter_number(p.get(defaults)).c_str(), parameter_range(p).c_str(),
+                  detail::number_text(p.get(defaults)).c_str(), parameter_range(p).c_str(),
                   std::string(p.meaning).c_str());
     text += line;
   }

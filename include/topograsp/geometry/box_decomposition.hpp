@@ -256,10 +256,10 @@ inline void require_surface_point_count(const TriangleMesh& mesh, double spacing
   throw_invalid_argument(
       huge ? mesh_name : spacing_name,
       std::string(huge ? "sampling its surface (" : "sampling the mesh's surface (") +
-          parameter_number(area) + " m^2, bounding box " + parameter_number(size.x()) + " x " +
-          parameter_number(size.y()) + " x " + parameter_number(size.z()) + " m) every " +
-          parameter_number(spacing) + " m needs " + parameter_number(count) +
-          " points, more than the limit of " + parameter_number(max_surface_points) +
+          number_text(area) + " m^2, bounding box " + number_text(size.x()) + " x " +
+          number_text(size.y()) + " x " + number_text(size.z()) + " m) every " +
+          number_text(spacing) + " m needs " + number_text(count) +
+          " points, more than the limit of " + number_text(max_surface_points) +
           " (max_surface_points); " +
           (huge ? "is the mesh in millimetres? scale it by 0.001"
                 : "a larger spacing samples fewer"));

@@ -158,8 +158,8 @@ inline std::vector<MeshShell> mesh_shells(const TriangleMesh& mesh) {
       report("vertex", "vertex " + std::to_string(i) + " is not finite");
     else if (v.cwiseAbs().maxCoeff() > max_mesh_coordinate)
       report("large", "vertex " + std::to_string(i) + " has a coordinate of magnitude " +
-                          detail::parameter_number(v.cwiseAbs().maxCoeff()) + " m, more than " +
-                          detail::parameter_number(max_mesh_coordinate) +
+                          detail::number_text(v.cwiseAbs().maxCoeff()) + " m, more than " +
+                          detail::number_text(max_mesh_coordinate) +
                           " m: coordinates too large for the mesh's areas, volume and inertia "
                           "(is the mesh in metres?)");
   }
@@ -220,7 +220,7 @@ inline std::vector<MeshShell> mesh_shells(const TriangleMesh& mesh) {
       report("inward", "the shell of triangle " + std::to_string(s.first) + " (" +
                            std::to_string(s.triangles) +
                            " triangles) encloses a volume that is not positive (" +
-                           detail::parameter_number(s.volume) + " m^3): it is wound inward");
+                           detail::number_text(s.volume) + " m^3): it is wound inward");
   return summed();
 }
 

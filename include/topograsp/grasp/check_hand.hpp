@@ -8,10 +8,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <vector>
 
+#include <topograsp/core/number_text.hpp>
 #include <topograsp/evaluation/close_hand.hpp>
 #include <topograsp/evaluation/hand_scene.hpp>
 #include <topograsp/evaluation/stability_suite.hpp>
@@ -64,14 +64,6 @@ struct HandCheck {
     return problems.empty() && held;
   }
 };
-
-namespace detail {
-inline std::string check_number(double v, const char* format = "%.1f") {
-  char b[32];
-  std::snprintf(b, sizeof b, format, v);
-  return b;
-}
-}  // namespace detail
 
 /// Checks hand \p M as the transfer will use it. With the hand open (every joint at 0 within its
 /// limits, the thumb turned to oppose: opposed_thumb()), and for a hand placed by its palm centre
@@ -126,14 +118,14 @@ template <const auto& M>
     const double angle = std::acos(std::clamp(across.normalized().dot(up), -1.0, 1.0));
     const auto in_frame = [&](const Vec3& v) {
       const Vec3 f = axes.transpose() * v * 1e3;
-      return detail::check_number(f.x()) + ", " + detail::check_number(f.y()) + ", " +
-             detail::check_number(f.z()) + " mm";
+      return detail::number_text(f.x(), "%.1f") + ", " + detail::number_text(f.y(), "%.1f") + ", " +
+             detail::number_text(f.z(), "%.1f") + " mm";
     };
     if (angle > pi / 3)
       out.problems.push_back(
           "the palm centre frame's +y should point from the thumb tip toward the fingertips, but "
           "they lie " +
-          detail::check_number(angle * 180.0 / pi, "%.0f") + " degrees from it (" +
+          detail::number_text(angle * 180.0 / pi, "%.0f") + " degrees from it (" +
           in_frame(across) +
           " in the frame): turn the palm_centre frame (docs/models.md, \"A hand description "
           "file\")");
@@ -165,9 +157,10 @@ template <const auto& M>
       const double away = (p1[f] - centre).norm() - (p0[f] - centre).norm();
       if (away > options.away_tolerance)
         out.problems.push_back("closing the joint " + std::string(M.joint_name(i)) +
-                               " (direction " + detail::check_number(dir[i], "%+.0f") +
+                               " (direction " + detail::number_text(dir[i], "%+.0f") +
                                ") moves the tip of " + std::string(M.fingers[f].spec.name.view()) +
-                               " away from the palm's front (" + detail::check_number(away * 1e3) +
+                               " away from the palm's front (" +
+                               detail::number_text(away * 1e3, "%.1f") +
                                " mm over 0.05): its closing direction is probably the opposite");
     }
   }

@@ -16,6 +16,7 @@
 #include <system_error>
 
 #include <topograsp/core/error.hpp>
+#include <topograsp/core/number_text.hpp>
 
 namespace topograsp {
 
@@ -24,12 +25,9 @@ namespace detail {
 /// \p v with \p digits decimals ("%.*f"; default 2, the coordinate format of the SVG writers),
 /// never a negative zero ("-0", "-0.00"): a value that rounds to zero prints without its sign.
 inline std::string svg_number(double v, int digits = 2) {
-  char b[352];  // room for the largest double with up to 16 decimals
-  std::snprintf(b, sizeof b, "%.*f", digits, v);
-  std::string s(b);
-  if (s.size() > 1 && s[0] == '-' && s.find_first_not_of("0.", 1) == std::string::npos)
-    s.erase(0, 1);
-  return s;
+  char format[16];
+  std::snprintf(format, sizeof format, "%%.%df", digits);
+  return number_text(v, format);
 }
 
 /// \p s with the five XML special characters escaped (for text and attribute values).

@@ -17,6 +17,7 @@
 
 #include <Eigen/Geometry>
 
+#include <topograsp/core/number_text.hpp>
 #include <topograsp/core/pose.hpp>
 #include <topograsp/geometry/mass_properties.hpp>
 #include <topograsp/io/hand_import/common.hpp>
@@ -119,14 +120,9 @@ class Describer {
     const std::string f = field + "." + key;
     const Json& v = o.at(key);
     if (!v.is_number() || !std::isfinite(v.as_number()) || v.as_number() < lo || v.as_number() > hi)
-      fail(f, "expected a number from " + number_text(lo) + " to " + number_text(hi));
+      fail(f,
+           "expected a number from " + detail::number_text(lo) + " to " + detail::number_text(hi));
     return v.as_number();
-  }
-
-  static std::string number_text(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%g", v);
-    return b;
   }
 
   [[nodiscard]] int link_index(std::string_view name) const {
@@ -267,7 +263,7 @@ class Describer {
     l.closing = 0.0;
     l.effort = l.velocity = l.armature = 0.0;
     h_.notes.push_back("the joint " + std::string(l.name.view()) + " is held at " +
-                       number_text(value) + " by the description (" +
+                       detail::number_text(value) + " by the description (" +
                        std::filesystem::path(source_).filename().string() + ")");
   }
 
@@ -307,8 +303,8 @@ class Describer {
         l.mass = mass;
         l.com = {c.x(), c.y(), c.z()};
         h_.notes.push_back("the link " + std::string(l.name.view()) + " has no mass in " + file() +
-                           ": " + number_text(mass) + " kg from its collision shapes at " +
-                           number_text(rho) + " kg/m^3 (defaults.density)");
+                           ": " + detail::number_text(mass) + " kg from its collision shapes at " +
+                           detail::number_text(rho) + " kg/m^3 (defaults.density)");
       }
     }
   }
