@@ -94,6 +94,20 @@ add_test(NAME "app: slurm job scripts"
          COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:grasp_transfer>
                  -DDIR=${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_slurm
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/grasp_transfer/slurm/run_locally.cmake)
+# grasp_transfer --hand: a small run with each other shipped hand (one stable bottle
+# demonstration), with figures; what only the SDH on the arm runs refused for another hand.
+foreach(hand IN ITEMS barrett allegro leap shadow)
+  add_test(NAME "app: grasp_transfer --hand ${hand} (small run)"
+           COMMAND grasp_transfer --hand ${hand} --objects bottle --max-hypotheses 2
+                   --methods topological,transplant,virtual_finger --jobs 2 --quiet --figures
+                   --out ${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_${hand})
+  set_tests_properties("app: grasp_transfer --hand ${hand} (small run)" PROPERTIES
+                       LABELS end_to_end PASS_REGULAR_EXPRESSION "results in .*grasp_transfer_${hand}")
+endforeach()
+expect_rejected(grasp_transfer end_to_end
+                "an unknown hand|--hand robotiq|--hand: no hand \"robotiq\" in this program \\(sdh, allegro, barrett, leap, shadow\\)"
+                "a method on the arm for another hand|--hand allegro --methods closed_windings|methods: \"closed_windings\" runs with the SDH on the arm only"
+                "the arm setting for another hand|--hand leap --setting arm|arm_setting: the arm carries the SDH only")
 # The transfer matrix (docs/results.md): a small run, one stable bottle demonstration to every
 # hand by the fingertip and virtual-finger baselines; bad arguments refused.
 add_test(NAME "app: transfer_matrix (small run)"

@@ -17,7 +17,11 @@
 #   hand_kinematics         one imported hand's kinematics and the windings of its curves
 #   imported_hand_transfer  human demonstrations transferred to an imported hand by every method
 #   sdh_on_arm              the README tour's transfer: the SDH on the arm, transfer_topological
-#   grasp_transfer          the main example, apps/grasp_transfer/main.cpp
+#   grasp_transfer_sdh      the main example's SDH, apps/grasp_transfer/hands/sdh.cpp
+#   hand_program            one imported hand's grasp_transfer (apps/grasp_transfer/hands/allegro.cpp,
+#                           the unit topograsp_add_hand_program generates for a user's hand)
+#   grasp_transfer_human    the human hand's side of every hand program, human.cpp
+#   grasp_transfer_main     the program's command line and merge, main.cpp
 #   test_<module>           a test module as CMake builds it (its files in one unity unit)
 # Nothing is built or run besides the compiler; objects go to a temporary folder.
 set -euo pipefail
@@ -27,8 +31,8 @@ flags=${FLAGS:-"-O2 -DNDEBUG"}
 repeat=${REPEAT:-1}
 units=("$@")
 if ((${#units[@]} == 0)); then
-  units=(tour_kinematics hand_kinematics imported_hand_transfer sdh_on_arm grasp_transfer
-         test_any_hand)
+  units=(tour_kinematics hand_kinematics imported_hand_transfer sdh_on_arm grasp_transfer_sdh
+         hand_program grasp_transfer_human grasp_transfer_main test_any_hand)
 fi
 if [[ ! -x /usr/bin/time ]]; then
   echo "compile_time.sh: needs GNU time (/usr/bin/time, Debian package time)" >&2
@@ -49,7 +53,15 @@ echo "| --- | --- | --- |"
 for unit in "${units[@]}"; do
   extra=()
   case $unit in
-    grasp_transfer) source=$root/apps/grasp_transfer/main.cpp; extra=("${optional[@]}") ;;
+    grasp_transfer_sdh | hand_program | grasp_transfer_human | grasp_transfer_main)
+      case $unit in
+        grasp_transfer_sdh) source=$root/apps/grasp_transfer/hands/sdh.cpp ;;
+        hand_program) source=$root/apps/grasp_transfer/hands/allegro.cpp ;;
+        grasp_transfer_human) source=$root/apps/grasp_transfer/human.cpp ;;
+        grasp_transfer_main) source=$root/apps/grasp_transfer/main.cpp ;;
+      esac
+      extra=(-I"$root/apps" "${optional[@]}")
+      ;;
     test_*)
       module=${unit#test_}
       if [[ ! -d $root/tests/$module ]]; then

@@ -28,11 +28,16 @@ struct CommandLine {
   /// The experiment: objects and methods are filled (default hammer, bottle and all three
   /// methods, in the order given), every other field as parsed or its default.
   ExperimentOptions experiment;
+  /// --hand: the robot hand the demonstrations are transferred to, one of the program's hands
+  /// (default its first: the SDH for grasp_transfer, docs/transfer.md "Any hand")
+  std::string hand;
   std::filesystem::path out = "grasp_transfer_out";  ///< --out: the output folder (non-empty)
   bool quiet = false;    ///< --quiet: no progress lines (warnings are still printed)
   bool figures = false;  ///< --figures: also DIR/figures/*.svg and DIR/index.html
   bool force = false;    ///< --force: write into a non-empty folder that holds no earlier run
   bool help = false;     ///< --help or -h: print command_line_usage() and do nothing else
+  /// false with --skip-hand-check: run even if the hand fails its self-check (check_hand)
+  bool check_hand = true;
   /// --resume: skip the hypotheses that an interrupted run into DIR with the same options
   /// journalled, and keep their records and scenes (docs/transfer.md)
   bool resume = false;
@@ -165,10 +170,16 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
 /// option other than --out, --force, --quiet (the message says which it takes), --out without a
 /// value or twice, an empty shard folder name, or no shard folder. \p mujoco_linked says
 /// whether the program was built with MuJoCo (TOPOGRASP_HAVE_MUJOCO); it sets the default of
-/// --judge: both with MuJoCo, builtin without.
+/// --judge: both with MuJoCo, builtin without. \p hands: the names --hand accepts, the first the
+/// default (empty: "sdh" only); another --hand is refused with the list.
 [[nodiscard]] inline CommandLine parse_command_line(std::span<const std::string_view> args,
-                                                    bool mujoco_linked = false) {
+                                                    bool mujoco_linked = false,
+                                                    std::span<const std::string_view> hands = {}) {
   CommandLine cli;
+  const std::vector<std::string> hand_names =
+      hands.empty() ? std::vector<std::string>{"sdh"}
+                    : std::vector<std::string>(hands.begin(), hands.end());
+  cli.hand = hand_names.front();
   cli.experiment.judge = mujoco_linked ? Judge::both : Judge::builtin;
   if (!args.empty() && args.front() == "merge") {
     cli.merge = true;
@@ -233,6 +244,10 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
       cli.resume = true;
       continue;
     }
+    if (arg == "--skip-hand-check") {
+      cli.check_hand = false;
+      continue;
+    }
     if (arg == "--every-test") {
       cli.experiment.transfer.sim.stability.every_test = true;
       continue;
@@ -252,7 +267,8 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
                                                   "--demonstrations",
                                                   "--hypotheses",
                                                   "--closing",
-                                                  "--setting"};
+                                                  "--setting",
+                                                  "--hand"};
     bool known = false;
     for (const std::string_view o : value_options) known = known || o == arg;
     if (!known)
@@ -272,6 +288,14 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
     }
     if (arg == "--objects") {
       objects_list = value;
+    } else if (arg == "--hand") {
+      if (std::find(hand_names.begin(), hand_names.end(), value) == hand_names.end()) {
+        std::string list;
+        for (const std::string& h : hand_names) list += (list.empty() ? "" : ", ") + h;
+        detail::throw_invalid_argument(
+            arg, "no hand " + detail::quote_argument(value) + " in this program (" + list + ")");
+      }
+      cli.hand = std::string(value);
     } else if (arg == "--demonstrations") {
       cli.experiment.demonstrations = detail::read_demonstrations(value);
     } else if (arg == "--methods") {
@@ -424,9 +448,16 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
        grasp_transfer merge [--out DIR] [--force] [--quiet] SHARD_DIR...
 
 Transfers stable human grasps to the Schunk SDH (on a 7-DOF arm) and tests every result in
-simulation, as in "Topological Synergies for Grasp Transfer" (Table I).
+simulation, as in "Topological Synergies for Grasp Transfer" (Table I); or to another hand.
 
 options:
+  --hand NAME      the robot hand (default sdh; the hands of this program are listed below):
+                   the SDH as in the paper, any other hand on a free base, by every method but
+                   closed_windings and shuffled_windings, in the hand setting
+                   (docs/transfer.md, "Any hand"); every run first checks the hand
+                   (check_hand: its palm frame, closing directions, motors and masses, and a
+                   ball and a cylinder closed at its palm) and stops if it fails
+  --skip-hand-check  run even if the hand fails its self-check
   --demonstrations FILE_OR_DIR  recorded human grasps (21 hand keypoints each, the JSON format
                    of docs/transfer.md; a folder: its *.json files by name) as the
                    demonstrations, in place of the planned ones; their objects are the run's

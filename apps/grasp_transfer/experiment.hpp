@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
 /// The paper's experiment (section IV, Table I) as a library call: human demonstrations on each
-/// object's box hypotheses, the stable ones transferred to the SDH by each method, every result
-/// judged by the stability suite; in parallel, sharded, reproducible. run_experiment is a
-/// template with nothing to give (`template <class = void>`), instantiated only where it is
-/// called (docs/architecture.md, "Compile time").
+/// object's box hypotheses, the stable ones transferred to a robot hand (the SDH by default, any
+/// hand model with a hand description) by each method, every result judged by the stability
+/// suite; in parallel, sharded, reproducible. run_experiment is a template on the target hand,
+/// instantiated only where it is called (docs/architecture.md, "Compile time").
 #pragma once
 
 #include <algorithm>
@@ -17,6 +17,7 @@
 #include <string>
 #include <string_view>
 #include <thread>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -24,6 +25,7 @@
 #include <topograsp/grasp/grasp_identity.hpp>
 #include <topograsp/grasp/keypoint_fit.hpp>
 #include <topograsp/grasp/transfer.hpp>
+#include <topograsp/grasp/transfer/hand.hpp>
 
 namespace topograsp {
 
@@ -106,18 +108,22 @@ struct MethodSummary {
   }
 };
 
-/// Everything measured on one object.
-struct ObjectResult {
+/// Everything measured on one object, the demonstrations transferred to hand \p M.
+template <const auto& M>
+struct ObjectResultOf {
   GraspObject object;
-  int hypotheses = 0;                               ///< hypotheses run (after sharding)
-  std::vector<HumanGrasp> human;                    ///< every demonstration, in id order
-  std::vector<MethodSummary> methods;               ///< in options.methods order
-  std::vector<std::vector<SdhTransfer>> transfers;  ///< [method][k]: the k-th stable human grasp
-  std::vector<int> transferred_ids;                 ///< the human grasp id of each k
+  int hypotheses = 0;                  ///< hypotheses run (after sharding)
+  std::vector<HumanGrasp> human;       ///< every demonstration, in id order
+  std::vector<MethodSummary> methods;  ///< in options.methods order
+  std::vector<std::vector<HandTransfer<M>>>
+      transfers;                     ///< [method][k]: the k-th stable human grasp
+  std::vector<int> transferred_ids;  ///< the human grasp id of each k
   [[nodiscard]] int stable_human() const noexcept {
     return static_cast<int>(transferred_ids.size());
   }
 };
+/// Everything measured on one object, the demonstrations transferred to the SDH (the paper's).
+using ObjectResult = ObjectResultOf<models::schunk_sdh>;
 
 /// The verdicts of method \p m (an index into \p r.methods) on each stable human grasp of \p r,
 /// in the order of r.transferred_ids: by the engine that decides (\p second_judge false) or by
@@ -125,14 +131,15 @@ struct ObjectResult {
 /// a second verdict (no second judge in the run) fails in the second. Every method's vector has
 /// the same grasps in the same order, so two of them are paired (compare_paired).
 /// \throws topograsp::invalid_argument for m out of range.
-[[nodiscard]] inline std::vector<bool> method_outcomes(const ObjectResult& r, std::size_t m,
-                                                       bool second_judge) {
+template <const auto& M>
+[[nodiscard]] std::vector<bool> method_outcomes(const ObjectResultOf<M>& r, std::size_t m,
+                                                bool second_judge) {
   if (m >= r.transfers.size())
     detail::throw_invalid_argument(
         "m", "expected a method index below " + std::to_string(r.transfers.size()));
   std::vector<bool> out;
   out.reserve(r.transfers[m].size());
-  for (const SdhTransfer& t : r.transfers[m])
+  for (const HandTransfer<M>& t : r.transfers[m])
     out.push_back(second_judge ? t.planned && t.second && t.second->stable : t.stable());
   return out;
 }
@@ -220,30 +227,74 @@ int parallel_for(int n, int jobs, const std::function<void(int)>& body,
 using ProgressFn = std::function<void(std::string_view)>;
 
 /// Called once for each hypothesis when it is done: the object, the demonstration, and each
-/// method's transfer of it in options.methods order (empty when the demonstration was not
-/// stable). From worker threads, one call at a time, in no fixed order (grasp_transfer journals
-/// each hypothesis so that --resume can skip it). An exception it throws ends the run.
-using HypothesisDoneFn =
-    std::function<void(const GraspObject&, const HumanGrasp&, const std::vector<SdhTransfer>&)>;
+/// method's transfer of it to hand \p M in options.methods order (empty when the demonstration
+/// was not stable). From worker threads, one call at a time, in no fixed order (grasp_transfer
+/// journals each hypothesis so that --resume can skip it). An exception it throws ends the run.
+template <const auto& M>
+using HypothesisDoneFnOf =
+    std::function<void(const GraspObject&, const HumanGrasp&, const std::vector<HandTransfer<M>>&)>;
+/// The same for the SDH (the paper's).
+using HypothesisDoneFn = HypothesisDoneFnOf<models::schunk_sdh>;
+
+/// Whether hand model \p M is the SDH (models::schunk_sdh), the paper's hand.
+template <const auto& M>
+[[nodiscard]] consteval bool is_sdh() noexcept {
+  if constexpr (std::is_same_v<std::remove_cvref_t<decltype(M)>,
+                               std::remove_cvref_t<decltype(models::schunk_sdh)>>)
+    return &M == &models::schunk_sdh;
+  else
+    return false;
+}
+
+/// Whether the experiment runs \p method on hand \p M: every method on the SDH (the paper's
+/// hand: its topological plan on the arm, transfer()); on any other hand the methods of
+/// transfer_hand() (any_hand_method: on a free base, so not closed_windings, whose closing
+/// corrections run on the arm, nor shuffled_windings).
+template <const auto& M>
+[[nodiscard]] constexpr bool experiment_method(TransferMethod method) noexcept {
+  return is_sdh<M>() || any_hand_method(method);
+}
 
 namespace detail {
 // run_experiment with the threads started by start_thread (a test seam, see parallel_for).
-template <class StartThread>
-std::vector<ObjectResult> run_experiment_with(const ExperimentOptions& options,
-                                              const ProgressFn& progress,
-                                              const HypothesisDoneFn& on_done,
-                                              StartThread&& start_thread);
+template <const auto& M, class StartThread>
+std::vector<ObjectResultOf<M>> run_experiment_with(const ExperimentOptions& options,
+                                                   const ProgressFn& progress,
+                                                   const HypothesisDoneFnOf<M>& on_done,
+                                                   const SecondJudge<M>& second,
+                                                   StartThread&& start_thread);
+
+// One method's transfer of the demonstration g to hand M: the SDH's by transfer() (the paper's
+// setting, judged also by options.sim.second_judge_sdh), any other hand's by transfer_hand() on a
+// free base, judged also by second.
+template <const auto& M>
+HandTransfer<M> experiment_transfer(TransferMethod method, const GraspObject& object,
+                                    const HumanGrasp& g, const TransferOptions& options,
+                                    const SecondJudge<M>& second) {
+  if constexpr (is_sdh<M>()) {
+    (void)second;
+    return transfer(method, object, g, options);
+  } else {
+    TransferRun<M> refusal(method, unusable_human_grasp(g), options);
+    if (refusal.refused()) return refusal.unplanned();
+    return transfer_hand<M>(method, object, source_grasp(g), options, second);
+  }
+}
 }  // namespace detail
 
-/// Checks \p options as run_experiment does before any work.
+/// Checks \p options as run_experiment<M> does before any work, \p second the second judge of
+/// hand M (for the SDH, options.transfer.sim.second_judge_sdh when \p second is empty).
 /// \throws topograsp::invalid_argument naming the field for jobs < 1, a bad shard,
 /// max_hypotheses < 0, an empty object or method list, an object (by name) or a method given twice
-/// (their scenes would overwrite each other), an invalid object, or a transfer parameter outside
+/// (their scenes would overwrite each other), a method hand M does not run (experiment_method), the
+/// arm setting for a hand other than the SDH, an invalid object, or a transfer parameter outside
 /// its range (validate_transfer_parameters), a negative or non-finite transfer.sim.friction, a
 /// hold fraction outside (0, 1] (transfer.sim.close.hold_fraction, human_hold_fraction),
 /// bad stability options (validate_stability_options, named "transfer.sim.stability.<option>"),
 /// or a skipped hypothesis of an object that is not in the run.
-inline void validate_experiment_options(const ExperimentOptions& options) {
+template <const auto& M = models::schunk_sdh>
+void validate_experiment_options(const ExperimentOptions& options,
+                                 const SecondJudge<M>& second = {}) {
   if (options.jobs < 1) detail::throw_invalid_argument("jobs", "expected at least 1");
   if (options.shard_count < 1 || options.shard_index < 0 ||
       options.shard_index >= options.shard_count)
@@ -263,6 +314,17 @@ inline void validate_experiment_options(const ExperimentOptions& options) {
         detail::throw_invalid_argument("methods", "\"" +
                                                       std::string(to_string(options.methods[i])) +
                                                       "\" is given twice (each method once)");
+  constexpr std::string_view hand = M.name.view();
+  for (const TransferMethod m : options.methods)
+    if (!experiment_method<M>(m))
+      detail::throw_invalid_argument(
+          "methods", "\"" + std::string(to_string(m)) +
+                         "\" runs with the SDH on the arm only; the " + std::string(hand) +
+                         " is placed on a free base (docs/transfer.md, \"Any hand\")");
+  if (options.arm_setting && !is_sdh<M>())
+    detail::throw_invalid_argument("arm_setting", "the arm carries the SDH only; the " +
+                                                      std::string(hand) +
+                                                      " is placed on a free base (--setting hand)");
   for (const GraspObject& o : options.objects) o.validate();
   for (std::size_t i = 0; i < options.demonstrations.size(); ++i) {
     const std::string& name = options.demonstrations[i].grasp.object;
@@ -275,12 +337,14 @@ inline void validate_experiment_options(const ExperimentOptions& options) {
   validate_transfer_parameters(options.transfer);
   require_non_negative(options.transfer.sim.friction, "transfer.sim.friction");
   const GraspSimOptions& sim = options.transfer.sim;
-  const bool second = sim.second_judge_human && sim.second_judge_sdh;
-  if (options.judge != Judge::builtin && !second)
+  bool target_judged = static_cast<bool>(second);
+  if constexpr (is_sdh<M>()) target_judged = target_judged || sim.second_judge_sdh;
+  if (options.judge != Judge::builtin && !(sim.second_judge_human && target_judged))
     detail::throw_invalid_argument(
         "judge", "--judge " + std::string(to_string(options.judge)) +
-                     " needs a second judge (transfer.sim.second_judge_human and _sdh)");
-  if (options.judge == Judge::builtin && (sim.second_judge_human || sim.second_judge_sdh))
+                     " needs a second judge (transfer.sim.second_judge_human and the " +
+                     std::string(hand) + "'s)");
+  if (options.judge == Judge::builtin && (sim.second_judge_human || target_judged))
     detail::throw_invalid_argument(
         "judge", "builtin, but a second judge is set (transfer.sim.second_judge_*)");
   if (sim.second_judge_decides != (options.judge == Judge::mujoco))
@@ -298,8 +362,12 @@ inline void validate_experiment_options(const ExperimentOptions& options) {
                                                  std::to_string(s.second) + ") is not in the run");
 }
 
-/// Runs the experiment described by \p options. Throws topograsp::invalid_argument naming the
-/// field, before any work, for the options validate_experiment_options refuses. Each hypothesis
+/// Runs the experiment described by \p options, the demonstrations transferred to hand \p M (the
+/// SDH by default, as in the paper: detail::experiment_transfer says how each hand is reached),
+/// each transfer judged also by \p second when the run has a second judge (for the SDH,
+/// options.transfer.sim.second_judge_sdh when \p second is empty). Throws
+/// topograsp::invalid_argument naming the field, before any work, for the options
+/// validate_experiment_options<M> refuses. Each hypothesis
 /// (of every object, but those in options.skip; or each recorded grasp of options.demonstrations)
 /// is one task: its demonstration, then, if stable,
 /// each method's transfer of it; \p on_done is called when it is done. Results are identical for
@@ -307,19 +375,21 @@ inline void validate_experiment_options(const ExperimentOptions& options) {
 /// objects or the shard (grasp_seed). If fewer than \p options.jobs threads can be started, the
 /// run goes on with those that did (at least the calling thread) and says so once through
 /// \p progress, in a line that starts with "warning: ".
-template <class = void>
-[[nodiscard]] std::vector<ObjectResult> run_experiment(const ExperimentOptions& options,
-                                                       const ProgressFn& progress = {},
-                                                       const HypothesisDoneFn& on_done = {}) {
-  return detail::run_experiment_with(options, progress, on_done, detail::StartStdThread{});
+template <const auto& M = models::schunk_sdh>
+[[nodiscard]] std::vector<ObjectResultOf<M>> run_experiment(
+    const ExperimentOptions& options, const ProgressFn& progress = {},
+    const HypothesisDoneFnOf<M>& on_done = {}, const SecondJudge<M>& second = {}) {
+  return detail::run_experiment_with<M>(options, progress, on_done, second,
+                                        detail::StartStdThread{});
 }
 
-template <class StartThread>
-std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& options,
-                                                      const ProgressFn& progress,
-                                                      const HypothesisDoneFn& on_done,
-                                                      StartThread&& start_thread) {
-  validate_experiment_options(options);
+template <const auto& M, class StartThread>
+std::vector<ObjectResultOf<M>> detail::run_experiment_with(const ExperimentOptions& options,
+                                                           const ProgressFn& progress,
+                                                           const HypothesisDoneFnOf<M>& on_done,
+                                                           const SecondJudge<M>& second,
+                                                           StartThread&& start_thread) {
+  validate_experiment_options<M>(options, second);
   std::mutex report_mutex;  // progress and on_done: one call at a time
   const auto say = [&](const std::string& line) {
     if (!progress) return;
@@ -331,7 +401,7 @@ std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& o
   std::vector<std::vector<GraspHypothesis>> hyps(no);
   std::vector<std::vector<const RecordedGrasp*>> recorded(no);
   std::vector<std::pair<std::size_t, int>> tasks;
-  std::vector<ObjectResult> results(no);
+  std::vector<ObjectResultOf<M>> results(no);
   std::vector<std::vector<std::size_t>> task_of(no);  // [object][k]: the task of its k-th id
   for (std::size_t oi = 0; oi < no; ++oi) {
     results[oi].object = options.objects[oi];
@@ -355,7 +425,7 @@ std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& o
     results[oi].hypotheses = static_cast<int>(task_of[oi].size());
   }
   std::vector<HumanGrasp> human(tasks.size());
-  std::vector<std::vector<SdhTransfer>> transfers(tasks.size());
+  std::vector<std::vector<HandTransfer<M>>> transfers(tasks.size());
   std::atomic<int> done{0}, stable_done{0};
   std::string start_error;
   const int ran = detail::parallel_for(
@@ -366,6 +436,8 @@ std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& o
         TransferOptions transfer_options = options.transfer;
         transfer_options.sim.stability.seed = grasp_seed(options.seed, object.name, id);
         if (options.arm_setting) transfer_options.arm_object = arm_setting_object_pose(object);
+        if constexpr (is_sdh<M>())
+          if (second) transfer_options.sim.second_judge_sdh = second;
         HumanGrasp& g = human[static_cast<std::size_t>(k)];
         const auto i = static_cast<std::size_t>(id);
         g = recorded[oi].empty()
@@ -384,14 +456,15 @@ std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& o
                 "the human hand cannot be placed at the object along its palm's approach "
                 "from the recorded pose; no record");
         }
-        std::vector<SdhTransfer>& t = transfers[static_cast<std::size_t>(k)];
+        std::vector<HandTransfer<M>>& t = transfers[static_cast<std::size_t>(k)];
         if (g.stable()) {
-          // The shuffled-windings control's other demonstration, made when first needed.
-          std::optional<HumanGrasp> partner;
-          bool sought = false;
+          // The shuffled-windings control's other demonstration, made when first needed (the SDH
+          // only).
+          [[maybe_unused]] std::optional<HumanGrasp> partner;
+          [[maybe_unused]] bool sought = false;
           const std::size_t object_index = oi;  // clang 14 captures no structured binding
           const int grasp_id = id;
-          const auto find_partner = [&]() -> std::optional<HumanGrasp> {
+          [[maybe_unused]] const auto find_partner = [&]() -> std::optional<HumanGrasp> {
             GraspSimOptions sim = transfer_options.sim;
             sim.second_judge_human = {};  // only its windings are used
             const auto& own = recorded[object_index];
@@ -406,13 +479,15 @@ std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& o
           };
           for (const TransferMethod m : options.methods) {
             if (m != TransferMethod::shuffled_windings) {
-              t.push_back(transfer(m, object, g, transfer_options));
+              t.push_back(experiment_transfer<M>(m, object, g, transfer_options, second));
               continue;
             }
-            if (!sought) partner = find_partner();
-            sought = true;
-            t.push_back(
-                transfer_shuffled(object, g, partner ? &*partner : nullptr, transfer_options));
+            if constexpr (is_sdh<M>()) {  // the SDH only (experiment_method)
+              if (!sought) partner = find_partner();
+              sought = true;
+              t.push_back(
+                  transfer_shuffled(object, g, partner ? &*partner : nullptr, transfer_options));
+            }
           }
           ++stable_done;
         }
@@ -431,7 +506,7 @@ std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& o
             std::min<std::size_t>(static_cast<std::size_t>(options.jobs), tasks.size())) +
         " threads (" + start_error + "); the run goes on with " + std::to_string(ran));
   for (std::size_t oi = 0; oi < no; ++oi) {
-    ObjectResult& res = results[oi];
+    ObjectResultOf<M>& res = results[oi];
     res.transfers.assign(nm, {});
     for (const std::size_t k : task_of[oi]) {
       res.human.push_back(std::move(human[k]));
@@ -443,7 +518,7 @@ std::vector<ObjectResult> detail::run_experiment_with(const ExperimentOptions& o
       MethodSummary summary;
       summary.method = options.methods[m];
       summary.tested = res.stable_human();
-      for (const SdhTransfer& r : res.transfers[m]) summary.stable += r.stable() ? 1 : 0;
+      for (const HandTransfer<M>& r : res.transfers[m]) summary.stable += r.stable() ? 1 : 0;
       res.methods.push_back(summary);
     }
   }

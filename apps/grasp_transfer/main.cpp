@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // grasp_transfer: the paper's experiment. Generates the human grasps on the objects, keeps the
-// stable ones, transfers them to the Schunk SDH with each method, tests every result, and prints
-// the paper's Table I beside its own; writes DIR/results.json and DIR/scenes/*.xml (MJCF), and
-// with --figures DIR/figures/*.svg and DIR/index.html, through a staging folder committed at the
-// end (apps/grasp_transfer/output_folder.hpp). The command line is parse_command_line
-// (apps/grasp_transfer/command_line.hpp).
+// stable ones, transfers them to a robot hand (--hand; the Schunk SDH by default) with each
+// method, tests every result, and prints the paper's Table I beside its own; writes
+// DIR/results.json and DIR/scenes/*.xml (MJCF), and with --figures DIR/figures/*.svg and
+// DIR/index.html, through a staging folder committed at the end
+// (apps/grasp_transfer/output_folder.hpp). The command line is parse_command_line
+// (apps/grasp_transfer/command_line.hpp); each hand's run is compiled apart (program.hpp).
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -18,20 +18,11 @@
 #include <string_view>
 #include <vector>
 
-#include <grasp_transfer/command_line.hpp>
-#include <grasp_transfer/experiment.hpp>
-#include <grasp_transfer/journal.hpp>
-#include <grasp_transfer/output_folder.hpp>
-#include <grasp_transfer/report.hpp>
-#include <grasp_transfer/results.hpp>
-#include <topograsp/evaluation/statistics.hpp>
-#ifdef TOPOGRASP_HAVE_MUJOCO
-#include <topograsp/mujoco/mujoco_scene.hpp>
-#endif
+#include <grasp_transfer/program.hpp>
+
+namespace topograsp::app {
 
 namespace {
-
-using namespace topograsp;
 
 // "62% [36, 82]": a rate with its 95 % Wilson interval, in percent.
 std::string percent(const Json& stable, const Json& tested, const Json& interval) {
@@ -44,17 +35,20 @@ std::string percent(const Json& stable, const Json& tested, const Json& interval
   return buf;
 }
 
-// The paper's Table I next to ours, one column per object (and one over all objects), from
-// results.json's summaries; with a second judge its rates too; then each method against the
-// topological one on the same grasps (McNemar's exact test).
+}  // namespace
+
+// One column per object (and one over all objects), from results.json's summaries.
 void print_table(const Json& doc) {
   const Json& config = doc.at("config");
   // One column per object, then one over every object when there are several.
   std::vector<const Json*> objects;
   for (const Json& o : doc.at("objects").as_array()) objects.push_back(&o);
   if (objects.size() > 1 && doc.contains("overall")) objects.push_back(&doc.at("overall"));
-  const auto paper = [](const std::string& object, int row) -> std::string {
+  // The paper's numbers are the SDH's.
+  const bool paper_hand = config.at("hand").as_string() == models::schunk_sdh.name.view();
+  const auto paper = [paper_hand](const std::string& object, int row) -> std::string {
     // Table I of the paper: hammer, bottle; rows: grasps, stable, autoclose, topological.
+    if (!paper_hand) return "-";
     if (object == "hammer")
       return std::array<const char*, 4>{"101", "67", "13%", "53%"}[static_cast<std::size_t>(row)];
     if (object == "bottle")
@@ -177,14 +171,6 @@ void print_table(const Json& doc) {
   }
 }
 
-// The text of the file at path, or an error naming what.
-std::string read_file(const std::filesystem::path& path, const std::string& what) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw invalid_argument(what + ": cannot read \"" + path.string() + "\"");
-  return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-}
-
-// Copies the scene files of records from the folder from into the folder to (both hold scenes/).
 void copy_scenes(const std::vector<Json>& records, const std::filesystem::path& from,
                  const std::filesystem::path& to) {
   namespace fs = std::filesystem;
@@ -198,6 +184,20 @@ void copy_scenes(const std::vector<Json>& records, const std::filesystem::path& 
       throw invalid_argument("cannot copy \"" + (from / scene).string() + "\" (" + ec.message() +
                              ")");
   }
+}
+
+}  // namespace topograsp::app
+
+namespace {
+
+using namespace topograsp;
+using namespace topograsp::app;
+
+// The text of the file at path, or an error naming what.
+std::string read_file(const std::filesystem::path& path, const std::string& what) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw invalid_argument(what + ": cannot read \"" + path.string() + "\"");
+  return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
 }
 
 // grasp_transfer merge: the shards' results.json and scenes into one output folder.
@@ -223,110 +223,14 @@ int merge(const CommandLine& cli, bool& started, bool& committing) {
   return 0;
 }
 
-// The MJCF scene of each grasp of a hypothesis, into dir/scenes.
-void write_scenes(const std::filesystem::path& dir, const ExperimentOptions& experiment,
-                  const GraspObject& object, const HumanGrasp& g,
-                  const std::vector<SdhTransfer>& transfers) {
-  if (!g.reached) return;
-  detail::write_text_file(
-      dir / scene_path(object.name, g.id, "human"),
-      grasp_mjcf<models::human_hand>(object, g.hand_pose, g.q, g.object_pose, g.closing.hold_torque,
-                                     experiment.transfer));
-  for (const SdhTransfer& t : transfers)
-    if (t.planned)
-      detail::write_text_file(
-          dir / scene_path(object.name, g.id, to_string(t.method)),
-          grasp_mjcf<models::schunk_sdh>(object, t.hand_pose, t.q_closed, t.object_pose,
-                                         t.closing.hold_torque, experiment.transfer));
-}
-
-// The experiment: run (or resume), journal each hypothesis, write and commit the output folder.
-int run(CommandLine& cli, bool& started, bool& committing) {
-#ifdef TOPOGRASP_HAVE_MUJOCO
-  if (cli.experiment.judge != Judge::builtin) {
-    // MuJoCo judges each closed grasp with the same suite: the scene exported articulated
-    // (io/mjcf.hpp) and stepped through MujocoScene.
-    GraspSimOptions& sim = cli.experiment.transfer.sim;
-    sim.second_judge_human = [](const HandScene<models::human_hand>& scene,
-                                const StabilityOptions& o) {
-      return stability_suite(MujocoScene(scene), o);
-    };
-    sim.second_judge_sdh = [](const HandScene<models::schunk_sdh>& scene,
-                              const StabilityOptions& o) {
-      return stability_suite(MujocoScene(scene), o);
-    };
-    sim.second_judge_name = cli.experiment.judge == Judge::mujoco ? "builtin" : "mujoco";
-    sim.second_judge_decides = cli.experiment.judge == Judge::mujoco;
-  }
-#endif
-  if (cli.resume && cli.figures)
-    throw invalid_argument(
-        "--figures: draws the grasps of this run only, so not with --resume (draw them from a "
-        "run without it)");
-  validate_experiment_options(cli.experiment);
-  check_scene_names(cli.experiment);
-  OutputFolder folder(cli.out, cli.force, "--out", cli.resume);  // checked before any work
-  const std::filesystem::path& stage = folder.staging();
-  std::filesystem::create_directories(stage / "scenes");
-  const Json config = results_config(cli.experiment);
-  // --resume: the hypotheses that interrupted runs journalled (with all their scenes), once each.
-  std::vector<JournalEntry> resumed;
-  for (const std::filesystem::path& leftover : folder.leftovers()) {
-    if (!std::filesystem::exists(leftover / journal_file_name)) continue;
-    for (JournalEntry& e : read_journal(leftover / journal_file_name, config)) {
-      const bool seen = std::any_of(resumed.begin(), resumed.end(), [&](const JournalEntry& r) {
-        return r.object == e.object && r.id == e.id;
-      });
-      const bool whole = std::all_of(e.records.begin(), e.records.end(), [&](const Json& r) {
-        return !r.at("scene").is_string() ||
-               std::filesystem::exists(leftover / r.at("scene").as_string());
-      });
-      if (seen || !whole) continue;
-      copy_scenes(e.records, leftover, stage);
-      resumed.push_back(std::move(e));
-    }
-  }
-  folder.remove_leftovers();
-  ResultsJournal journal(stage / journal_file_name, config);
-  folder.keep_staging_on_failure();  // the journal is what --resume takes over
-  std::vector<ObjectRecords> earlier;
-  for (const JournalEntry& e : resumed) {
-    journal.append(e);
-    cli.experiment.skip.emplace_back(e.object, e.id);
-    auto o = std::find_if(earlier.begin(), earlier.end(),
-                          [&](const ObjectRecords& r) { return r.name == e.object; });
-    if (o == earlier.end()) o = earlier.insert(earlier.end(), ObjectRecords{e.object, 0, {}});
-    ++o->hypotheses;
-    o->grasps.insert(o->grasps.end(), e.records.begin(), e.records.end());
-  }
-  started = true;
-  const ProgressFn progress = [quiet = cli.quiet](std::string_view line) {
-    if (!quiet || line.starts_with("warning:")) std::cerr << line << '\n';
-  };
-  if (cli.resume)
-    progress(std::to_string(resumed.size()) + " hypotheses taken over from an interrupted run");
-  // Each finished hypothesis: its scenes, then its line in the journal.
-  const HypothesisDoneFn on_done = [&](const GraspObject& object, const HumanGrasp& g,
-                                       const std::vector<SdhTransfer>& transfers) {
-    write_scenes(stage, cli.experiment, object, g, transfers);
-    std::vector<const SdhTransfer*> ts;
-    for (const SdhTransfer& t : transfers) ts.push_back(&t);
-    journal.append({object.name, g.id, hypothesis_records(cli.experiment, object, g, ts)});
-  };
-  const auto t0 = std::chrono::steady_clock::now();
-  const std::vector<ObjectResult> results = run_experiment(cli.experiment, progress, on_done);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const Json doc = results_json(cli.experiment, results, earlier);
-  detail::write_text_file(stage / "results.json", doc.dump(2) + "\n");
-  if (cli.figures) (void)write_report(stage, results);
-  committing = true;
-  folder.commit();
-  print_table(doc);
-  std::printf("\n%.1f s with %d job(s); results in %s%s\n", seconds, cli.experiment.jobs,
-              (cli.out / "results.json").string().c_str(),
-              cli.figures ? (", figures in " + (cli.out / "index.html").string()).c_str() : "");
-  return 0;
+// The program's hands for --help.
+std::string hands_help() {
+  std::string text = "\nhands of this program (--hand):\n";
+  for (const HandProgram& h : hand_programs())
+    text += "  " + std::string(h.name) +
+            std::string(h.name.size() < 14 ? 14 - h.name.size() : 1, ' ') + std::string(h.model) +
+            (&h == &hand_programs().front() ? " (the default)" : "") + "\n";
+  return text;
 }
 
 }  // namespace
@@ -346,12 +250,18 @@ int main(int argc, char** argv) {
 #else
     constexpr bool mujoco_linked = false;
 #endif
-    CommandLine cli = parse_command_line(args, mujoco_linked);
+    std::vector<std::string_view> hands;
+    for (const HandProgram& h : hand_programs()) hands.push_back(h.name);
+    CommandLine cli = parse_command_line(args, mujoco_linked, hands);
     if (cli.help) {
-      std::fputs(command_line_usage().c_str(), stdout);
+      std::fputs((command_line_usage() + hands_help()).c_str(), stdout);
       return 0;
     }
-    return cli.merge ? merge(cli, started, committing) : run(cli, started, committing);
+    if (cli.merge) return merge(cli, started, committing);
+    const auto hand =
+        std::find_if(hands.begin(), hands.end(), [&](std::string_view h) { return h == cli.hand; });
+    return hand_programs()[static_cast<std::size_t>(hand - hands.begin())].run(cli, started,
+                                                                               committing);
   } catch (const std::exception& e) {
     std::cerr << "grasp_transfer: " << e.what() << '\n';
     if (committing)

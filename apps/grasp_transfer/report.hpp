@@ -21,11 +21,12 @@ namespace topograsp {
 
 /// The rows of Table I for \p results: hypotheses, stable human grasps, and the success rate of
 /// each method, one column per object.
-[[nodiscard]] inline std::vector<std::vector<std::string>> table_rows(
-    const std::vector<ObjectResult>& results) {
+template <const auto& M>
+[[nodiscard]] std::vector<std::vector<std::string>> table_rows(
+    const std::vector<ObjectResultOf<M>>& results) {
   std::vector<std::vector<std::string>> rows;
   std::vector<std::string> hyp{"hypotheses"}, stable{"stable human grasps"};
-  for (const ObjectResult& r : results) {
+  for (const ObjectResultOf<M>& r : results) {
     hyp.push_back(std::to_string(r.hypotheses));
     stable.push_back(std::to_string(r.stable_human()));
   }
@@ -34,7 +35,7 @@ namespace topograsp {
   if (results.empty()) return rows;
   for (std::size_t m = 0; m < results.front().methods.size(); ++m) {
     std::vector<std::string> row{std::string(to_string(results.front().methods[m].method))};
-    for (const ObjectResult& r : results) {
+    for (const ObjectResultOf<M>& r : results) {
       const MethodSummary& s = r.methods[m];
       char buf[48];
       std::snprintf(buf, sizeof buf, "%d/%d (%.0f%%)", s.stable, s.tested, 100.0 * s.rate());
@@ -57,35 +58,37 @@ inline SvgPanel grasp_panel(const GraspObject& object, const Eigen::Isometry3d& 
 }
 }  // namespace detail
 
-/// Writes the figures and index.html of \p results into \p dir (figures under dir/figures):
-/// \p per_object grasps of each object (the first stable human grasps), and the Fig. 7 and cost
-/// plots of the first topological plan. Returns the paths written, relative to \p dir.
+/// Writes the figures and index.html of \p results (the demonstrations transferred to hand M) into
+/// \p dir (figures under dir/figures): \p per_object grasps of each object (the first stable human
+/// grasps), and the Fig. 7 and cost plots of the first topological plan. Returns the paths
+/// written, relative to \p dir.
 /// \throws topograsp::invalid_argument naming "path" if a file cannot be written.
-inline std::vector<std::string> write_report(const std::filesystem::path& dir,
-                                             const std::vector<ObjectResult>& results,
-                                             int per_object = 3) {
+template <const auto& M>
+std::vector<std::string> write_report(const std::filesystem::path& dir,
+                                      const std::vector<ObjectResultOf<M>>& results,
+                                      int per_object = 3) {
   std::filesystem::create_directories(dir / "figures");
+  const std::string hand(M.name.view());
   HtmlPage page;
-  page.title = "topograsp: grasp transfer, human hand to Schunk SDH";
+  page.title = "topograsp: grasp transfer, human hand to " + hand;
   page.intro =
       "Success rate of each transfer method over the stable human grasps (the stability suite "
       "from the moment the fingers closed: the paper's shake and gravity along the six axis "
       "directions of the hand, the hand without the arm), and for a few grasps the human "
       "demonstration beside each transfer, captioned with the suite's verdict.";
   page.header.push_back("");
-  for (const ObjectResult& r : results) page.header.push_back(r.object.name);
+  for (const ObjectResultOf<M>& r : results) page.header.push_back(r.object.name);
   page.rows = table_rows(results);
   std::vector<std::string> written;
   bool plotted = false;
-  for (const ObjectResult& r : results) {
+  for (const ObjectResultOf<M>& r : results) {
     for (std::size_t k = 0; k < r.transferred_ids.size() && static_cast<int>(k) < per_object; ++k) {
       const int id = r.transferred_ids[k];
       const HumanGrasp& g = *std::find_if(r.human.begin(), r.human.end(),
                                           [&](const HumanGrasp& h) { return h.id == id; });
       std::vector<SvgPanel> panels;
       {
-        constexpr auto& h = models::human_hand;
-        KinematicsData<h> d;
+        KinematicsData<models::human_hand> d;
         forward_kinematics(d, g.q);
         SvgPanel p = detail::grasp_panel(r.object, g.object_pose, "human\nstable", true);
         p.scene.add_model(d, svg_colours::skin, "hand", g.hand_pose);
@@ -93,8 +96,7 @@ inline std::vector<std::string> write_report(const std::filesystem::path& dir,
         panels.push_back(std::move(p));
       }
       for (std::size_t m = 0; m < r.transfers.size(); ++m) {
-        const SdhTransfer& t = r.transfers[m][k];
-        constexpr auto& s = models::schunk_sdh;
+        const HandTransfer<M>& t = r.transfers[m][k];
         SvgPanel p = detail::grasp_panel(r.object, t.object_pose,
                                          std::string(to_string(t.method)) + "\n" +
                                              (t.stable()  ? "stable"
@@ -102,7 +104,7 @@ inline std::vector<std::string> write_report(const std::filesystem::path& dir,
                                                           : "not planned"),
                                          t.stable());
         if (t.planned) {
-          KinematicsData<s> d;
+          KinematicsData<M> d;
           forward_kinematics(d, t.q_closed);
           p.scene.add_model(d, svg_colours::robot, "hand", t.hand_pose);
           p.scene.add_hand_curves(d, t.hand_pose);
@@ -117,13 +119,18 @@ inline std::vector<std::string> write_report(const std::filesystem::path& dir,
       page.figures.push_back({name, r.object.name + ", grasp " + std::to_string(id) +
                                         ": the human demonstration and each transfer"});
       for (std::size_t m = 0; m < r.transfers.size() && !plotted; ++m) {
-        const SdhTransfer& t = r.transfers[m][k];
+        const HandTransfer<M>& t = r.transfers[m][k];
         if (t.winding_plan.empty()) continue;
         const std::string fig7 =
             "figures/windings_" + file_name_part(r.object.name) + "_" + std::to_string(id) + ".svg";
-        winding_plot<2>(t.winding_plan, t.winding_targets,
-                        "Windings of the SDH's curves over the plan (" + r.object.name + ")",
-                        "time step t", {"gamma_1 (finger 1)", "gamma_2 (finger 2)"})
+        constexpr int curves = hand_curve_count<M>;
+        std::vector<std::string> labels;
+        for (int c = 1; c <= curves; ++c)
+          labels.push_back("gamma_" + std::to_string(c) + " (finger " + std::to_string(c) + ")");
+        winding_plot<curves>(
+            t.winding_plan, t.winding_targets,
+            "Windings of the " + hand + "'s curves over the plan (" + r.object.name + ")",
+            "time step t", labels)
             .write((dir / fig7).string());
         const std::string cost =
             "figures/cost_" + file_name_part(r.object.name) + "_" + std::to_string(id) + ".svg";

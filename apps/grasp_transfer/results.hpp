@@ -285,6 +285,16 @@ inline Json json_stability_options(const StabilityOptions& o, double time_step) 
 }
 }  // namespace detail
 
+/// The reason of a simulated grasp's record: empty if \p stability holds it; else the first failed
+/// test's ("shake: the object no longer touches the hand"), after "closing ended with no contact; "
+/// when \p closing ended touching nothing (the fingers closed beside the object, or the object
+/// fell away while they closed).
+[[nodiscard]] inline std::string grasp_reason(const StabilityResult& stability,
+                                              const ClosingRecord& closing) {
+  if (stability.stable || closing.contacts > 0) return stability.reason;
+  return "closing ended with no contact; " + stability.reason;
+}
+
 /// Checks that the objects of \p options have scene files of their own: distinct names can clean
 /// to the same file name part ("a/b" and "a_b", file_name_part).
 /// \throws topograsp::invalid_argument naming "objects" and both names if two would share files.
@@ -298,9 +308,12 @@ inline void check_scene_names(const ExperimentOptions& options) {
                            scene_path(options.objects[i].name, 0, "human") + "\", ...");
 }
 
-/// The "config" object of results.json for \p options (docs/transfer.md).
-[[nodiscard]] inline Json results_config(const ExperimentOptions& options) {
+/// The "config" object of results.json for \p options, the demonstrations transferred to the hand
+/// model named \p hand (docs/transfer.md).
+[[nodiscard]] inline Json results_config(const ExperimentOptions& options,
+                                         std::string_view hand = models::schunk_sdh.name.view()) {
   Json cfg = Json::object();
+  cfg.set("hand", std::string(hand));
   Json objects = Json::array(), methods = Json::array();
   for (const GraspObject& o : options.objects) objects.push_back(o.name);
   for (const TransferMethod m : options.methods) methods.push_back(to_string(m));
@@ -364,12 +377,13 @@ inline void check_scene_names(const ExperimentOptions& options) {
 }
 
 /// The grasp records of one hypothesis of \p object: its demonstration \p g (none if the human
-/// hand did not reach the object) and each method's transfer of it, \p transfers in
+/// hand did not reach the object) and each method's transfer of it to hand M, \p transfers in
 /// options.methods order (empty when the demonstration was not stable), in the order
 /// results_document sorts into.
-[[nodiscard]] inline std::vector<Json> hypothesis_records(
+template <const auto& M>
+[[nodiscard]] std::vector<Json> hypothesis_records(
     const ExperimentOptions& options, const GraspObject& object, const HumanGrasp& g,
-    const std::vector<const SdhTransfer*>& transfers) {
+    const std::vector<const HandTransfer<M>*>& transfers) {
   std::vector<Json> out;
   if (!g.reached) return out;
   const std::string& second_name = options.transfer.sim.second_judge_name;
@@ -405,7 +419,7 @@ inline void check_scene_names(const ExperimentOptions& options) {
   rec.set("winding_robot", Json::array());
   rec.set("plan_ms", 0.0);
   rec.set("sweeps", 0);
-  rec.set("reason", g.stability.reason);
+  rec.set("reason", grasp_reason(g.stability, g.closing));
   rec.set("closing", detail::json_closing(&g.closing));
   // The palm (the hand's root link) in the object's frame when closing ended, and the joints.
   rec.set("hand_pose", detail::json_pose(g.object_pose.inverse() * g.hand_pose));
@@ -414,8 +428,8 @@ inline void check_scene_names(const ExperimentOptions& options) {
   detail::set_stability(rec, &g.stability);
   detail::set_second_and_quality(rec, g.second, &g.quality, second_name);
   out.push_back(std::move(rec));
-  for (const SdhTransfer* tp : transfers) {
-    const SdhTransfer& t = *tp;
+  for (const HandTransfer<M>* tp : transfers) {
+    const HandTransfer<M>& t = *tp;
     Json r = Json::object();
     r.set("object", object.name);
     r.set("id", g.id);
@@ -424,11 +438,12 @@ inline void check_scene_names(const ExperimentOptions& options) {
     r.set("stable", t.stable());
     r.set("scene", t.planned ? Json(scene_path(object.name, g.id, to_string(t.method))) : Json());
     // The human's y around the point of winding_robot (topological: its winding reference).
-    r.set("winding_human", detail::json_vector(t.source_winding.value_or(g.descriptor.values)));
+    r.set("winding_human", t.source_winding ? detail::json_vector(*t.source_winding)
+                                            : detail::json_vector(g.descriptor.values));
     r.set("winding_robot", detail::json_vector(t.winding));
     r.set("plan_ms", t.plan_ms);
     r.set("sweeps", t.sweeps);
-    r.set("reason", t.planned ? t.stability.reason : t.reason);
+    r.set("reason", t.planned ? grasp_reason(t.stability, t.closing) : t.reason);
     // What the planner said of a planned transfer (AICO's termination, the virtual finger's
     // opposition), null if nothing.
     r.set("planner", t.planned && !t.reason.empty() ? Json(t.reason) : Json());
@@ -708,19 +723,20 @@ struct ObjectRecords {
 /// results.json: {"generator": "topograsp grasp_transfer", "config": {...}, "objects": [...],
 /// "grasps": [...]}; see docs/transfer.md. \p earlier: records of hypotheses an earlier run did
 /// (options.skip; grasp_transfer --resume), by object name, with the number of them.
-[[nodiscard]] inline Json results_json(const ExperimentOptions& options,
-                                       const std::vector<ObjectResult>& results,
-                                       const std::vector<ObjectRecords>& earlier = {}) {
+template <const auto& M>
+[[nodiscard]] Json results_json(const ExperimentOptions& options,
+                                const std::vector<ObjectResultOf<M>>& results,
+                                const std::vector<ObjectRecords>& earlier = {}) {
   std::vector<ObjectRecords> objects;
-  for (const ObjectResult& r : results) {
+  for (const ObjectResultOf<M>& r : results) {
     ObjectRecords o{r.object.name, r.hypotheses, {}};
     for (const HumanGrasp& g : r.human) {
       const auto k = std::find(r.transferred_ids.begin(), r.transferred_ids.end(), g.id);
-      std::vector<const SdhTransfer*> transfers;
+      std::vector<const HandTransfer<M>*> transfers;
       if (k != r.transferred_ids.end())
-        for (const std::vector<SdhTransfer>& ts : r.transfers)
+        for (const std::vector<HandTransfer<M>>& ts : r.transfers)
           transfers.push_back(&ts[static_cast<std::size_t>(k - r.transferred_ids.begin())]);
-      for (Json& rec : hypothesis_records(options, r.object, g, transfers))
+      for (Json& rec : hypothesis_records<M>(options, r.object, g, transfers))
         o.grasps.push_back(std::move(rec));
     }
     for (const ObjectRecords& e : earlier)
@@ -730,7 +746,7 @@ struct ObjectRecords {
       }
     objects.push_back(std::move(o));
   }
-  return results_document(results_config(options), std::move(objects));
+  return results_document(results_config(options, M.name.view()), std::move(objects));
 }
 
 }  // namespace topograsp

@@ -75,16 +75,19 @@ inline Json agreement_summary(const std::vector<const Json*>& records, int teste
 inline Json json_median(std::vector<double> v) { return v.empty() ? Json() : Json(median(v)); }
 
 // The summary of a set of grasp records (one without tests - not simulated - counts in `tested`
-// and fails): how many, how many stable, the rate and its Wilson interval, each test's pass rate
+// and fails): how many, how many stable, the rate and its Wilson interval, how many closings ended
+// touching nothing (no_contact), each test's pass rate
 // over the grasps that ran it (null if none did), the median
 // over the stable ones of the paper shake's force ratio, and the second judge's summary.
 inline Json stability_summary(const std::vector<const Json*>& records) {
   Json s = Json::object();
   const int n = static_cast<int>(records.size());
-  int stable = 0;
+  int stable = 0, no_contact = 0;
   std::array<int, k_stability_tests> passed{}, run{};
   std::vector<double> ratios;
   for (const Json* rec : records) {
+    const Json& closing = rec->at("closing");
+    no_contact += closing.is_object() && closing.at("contacts").as_number() == 0.0 ? 1 : 0;
     const Json::Array& tests = rec->at("tests").as_array();
     if (tests.size() != k_stability_tests) continue;
     for (std::size_t i = 0; i < k_stability_tests; ++i) {
@@ -102,6 +105,7 @@ inline Json stability_summary(const std::vector<const Json*>& records) {
   s.set("stable", stable);
   s.set("rate", rate(stable));
   s.set("interval", json_interval(stable, n));
+  s.set("no_contact", no_contact);
   Json tests = Json::object();
   for (std::size_t i = 0; i < k_stability_tests; ++i)
     tests.set(std::string(to_string(static_cast<StabilityTest>(i))),

@@ -152,6 +152,25 @@ TEST_CASE("the option --setting chooses the hand or the arm setting", "[io][comm
              Catch::StartsWith("--setting: given twice"));
 }
 
+TEST_CASE("the option --hand picks one of the program's hands, the first by default",
+          "[io][command_line]") {
+  const std::vector<std::string_view> hands{"sdh", "allegro", "shadow"};
+  const auto parse_hands = [&](std::initializer_list<std::string_view> args) {
+    const std::vector<std::string_view> v(args);
+    return parse_command_line(v, false, hands);
+  };
+  CHECK(parse({}).hand == "sdh");  // a program that names no hands: the SDH's
+  CHECK(parse_hands({}).hand == "sdh");
+  CHECK(parse_hands({"--hand", "shadow"}).hand == "shadow");
+  const std::vector<std::string_view> gripper_only{"gripper"};
+  CHECK(parse_command_line(std::vector<std::string_view>{}, false, gripper_only).hand == "gripper");
+  CHECK_THROWS_WITH(parse_hands({"--hand", "barrett"}),
+                    "--hand: no hand \"barrett\" in this program (sdh, allegro, shadow)");
+  CHECK_THROWS_WITH(parse_hands({"--hand", "sdh", "--hand", "allegro"}), "--hand: given twice");
+  CHECK_THROWS_WITH(parse_hands({"--hand"}), "--hand: expected a value");
+  CHECK(error_of({"--hand", "allegro"}) == "--hand: no hand \"allegro\" in this program (sdh)");
+}
+
 TEST_CASE("the resume flag, and merge with the shards' folders", "[io][command_line]") {
   CHECK_FALSE(parse({}).resume);
   CHECK(parse({"--resume"}).resume);

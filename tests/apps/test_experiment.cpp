@@ -270,9 +270,12 @@ TEST_CASE("a small experiment: counts, schema and determinism", "[grasp][experim
       }
       if (g.at("stable").as_bool()) CHECK(g.at("reason").as_string().empty());
       // What closing did: as many contact points as it counts, each on a named link, its
-      // normal a unit vector, its force not negative.
+      // normal a unit vector, its force not negative; none, and the reason says so.
       const Json& closing = g.at("closing");
       if (closing.is_null()) continue;
+      if (closing.at("contacts").as_number() == 0.0 && !g.at("stable").as_bool())
+        CHECK_THAT(g.at("reason").as_string(),
+                   Catch::StartsWith("closing ended with no contact; "));
       const auto& points = closing.at("contact_points").as_array();
       CHECK(static_cast<double>(points.size()) == closing.at("contacts").as_number());
       for (const Json& p : points) {
@@ -453,7 +456,7 @@ TEST_CASE("transfer parameters are set and recorded by name", "[grasp][bad-input
   // results.json records every parameter under config.transfer.
   ExperimentOptions c = small_options(1);
   c.transfer = o;
-  const Json doc = results_json(c, {});
+  const Json doc = results_json(c, std::vector<ObjectResult>{});
   const Json& t = doc.at("config").at("transfer");
   for (const TransferParameter& p : transfer_parameters)
     CHECK(t.at(std::string(p.name)).as_number() == p.get(o));

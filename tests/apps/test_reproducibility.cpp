@@ -164,8 +164,8 @@ TEST_CASE("a failed thread start runs the work on the threads that started",
     c.jobs = 4;
     std::vector<std::string> lines;
     std::atomic<int> started{0};
-    const auto limited = detail::run_experiment_with(
-        c, [&](std::string_view line) { lines.emplace_back(line); }, {},
+    const auto limited = detail::run_experiment_with<models::schunk_sdh>(
+        c, [&](std::string_view line) { lines.emplace_back(line); }, {}, {},
         LimitedThreads{0, &started});
     const auto warnings = std::count_if(lines.begin(), lines.end(), [](const std::string& l) {
       return l.rfind("warning: could start only 1 of 2 threads", 0) == 0;

@@ -42,6 +42,37 @@ TEST_CASE("scene paths never leave DIR/scenes", "[io][results][bad-input]") {
   CHECK(file_name_part(std::string(1000, 'a')).size() == max_file_name_part);
 }
 
+TEST_CASE("a closing that ends touching nothing is named in the grasp's reason and counted",
+          "[io][results]") {
+  StabilityResult s;
+  s.stable = false;
+  s.reason = "shake: the object no longer touches the hand";
+  ClosingRecord c;
+  c.contacts = 0;
+  CHECK(grasp_reason(s, c) ==
+        "closing ended with no contact; shake: the object no longer touches the hand");
+  c.contacts = 3;
+  CHECK(grasp_reason(s, c) == "shake: the object no longer touches the hand");
+  s.stable = true;
+  s.reason.clear();
+  c.contacts = 0;
+  CHECK(grasp_reason(s, c).empty());
+  // The summaries count such closings (records without a closing, not simulated, are not).
+  const auto record = [](Json closing) {
+    Json r = Json::object();
+    r.set("stable", false);
+    r.set("tests", Json::array());
+    r.set("closing", std::move(closing));
+    r.set("second_judge", Json());
+    return r;
+  };
+  Json none = Json::object(), three = Json::object();
+  none.set("contacts", 0);
+  three.set("contacts", 3);
+  const Json a = record(none), b = record(three), d = record(Json());
+  CHECK(detail::stability_summary({&a, &b, &d}).at("no_contact").as_number() == 1.0);
+}
+
 TEST_CASE("objects whose names clean to the same file name are refused",
           "[io][results][bad-input]") {
   ExperimentOptions o;
@@ -158,6 +189,8 @@ TEST_CASE("results count distinct demonstrations: the same grasp up to symmetry 
       closing.set("touching_joints", 4);
       r.set("closing", closing);
       r.set("collider_error", 0.0);
+    } else {
+      r.set("closing", Json());  // a transfer's closing (none here: nothing was simulated)
     }
     return r;
   };

@@ -73,6 +73,11 @@ TEST_CASE("the merged shards of a run give the results.json of the whole run",
     CHECK_THROWS_WITH(merge_results({shards[0], other}),
                       Catch::StartsWith("shards: the shards were run with different \"seed\""));
     config = shards[1].at("config");
+    config.set("hand", "allegro_hand");  // a shard of grasp_transfer --hand allegro
+    other.set("config", config);
+    CHECK_THROWS_WITH(merge_results({shards[0], other}),
+                      Catch::StartsWith("shards: the shards were run with different \"hand\""));
+    config = shards[1].at("config");
     config.set("shard", "1/3");
     other.set("config", config);
     CHECK_THROWS_WITH(merge_results({shards[0], other}), "shards: shards of 2 and of 3 parts");
@@ -134,6 +139,9 @@ TEST_CASE("a run resumed from its journal gives the results.json of the whole ru
     CHECK_THROWS_WITH(read_journal(dir / journal_file_name, results_config(other)),
                       Catch::StartsWith("--resume: ") && Catch::Contains("another \"seed\"") &&
                           Catch::Contains("(\"3\" there, \"4\" now)"));
+    // A journal of another hand (grasp_transfer --hand) is refused the same way.
+    CHECK_THROWS_WITH(read_journal(dir / journal_file_name, results_config(whole, "leap_hand")),
+                      Catch::StartsWith("--resume: ") && Catch::Contains("another \"hand\""));
     std::ofstream(dir / "not_a_journal.jsonl") << "[1, 2]\n";
     CHECK_THROWS_WITH(read_journal(dir / "not_a_journal.jsonl", config),
                       Catch::Contains("does not start with a config"));
