@@ -115,8 +115,8 @@ struct ObjectResultOf {
   int hypotheses = 0;                  ///< hypotheses run (after sharding)
   std::vector<HumanGrasp> human;       ///< every demonstration, in id order
   std::vector<MethodSummary> methods;  ///< in options.methods order
-  std::vector<std::vector<HandTransfer<M>>>
-      transfers;                     ///< [method][k]: the k-th stable human grasp
+  /// [method][k]: the transfer of the k-th stable human grasp by each method
+  std::vector<std::vector<HandTransfer<M>>> transfers;
   std::vector<int> transferred_ids;  ///< the human grasp id of each k
   [[nodiscard]] int stable_human() const noexcept {
     return static_cast<int>(transferred_ids.size());
