@@ -83,6 +83,14 @@ expect_refused_folder(grasp_transfer "an output folder inside a file" ${bad}-c/f
 add_test(NAME "app: grasp_transfer --help" COMMAND grasp_transfer --help)
 set_tests_properties("app: grasp_transfer --help" PROPERTIES
                      PASS_REGULAR_EXPRESSION "backoff +0.03 +\\[0, 0.3\\]")
+# ... and the hands, those of the programs beside it (grasp_transfer-<hand>) too.
+if(NOT TOPOGRASP_SANITIZE)
+  add_test(NAME "app: grasp_transfer --help lists the hand programs beside it"
+           COMMAND grasp_transfer --help)
+  set_tests_properties("app: grasp_transfer --help lists the hand programs beside it" PROPERTIES
+                       PASS_REGULAR_EXPRESSION
+                       "sdh +schunk_sdh [(]the default[)]\n  allegro +run by grasp_transfer-allegro\n  barrett +run by grasp_transfer-barrett\n")
+endif()
 # Two shards of a small run merged into one output folder (merge_results checks the document
 # against the whole run in tests/grasp/test_resume_merge.cpp); a shard missing is refused.
 add_test(NAME "app: grasp_transfer shards merged"
@@ -108,6 +116,16 @@ expect_rejected(grasp_transfer end_to_end
                 "an unknown hand|--hand robotiq|--hand: no hand \"robotiq\" in this program \\(sdh, allegro, barrett, leap, shadow\\)"
                 "a method on the arm for another hand|--hand allegro --methods closed_windings|methods: \"closed_windings\" runs with the SDH on the arm only"
                 "the arm setting for another hand|--hand leap --setting arm|arm_setting: the arm carries the SDH only")
+# A hand whose program (grasp_transfer-<hand>) is not built: grasp_transfer, alone in a folder,
+# says which target builds it. Not in the sanitizer build, which has no other hand.
+if(NOT TOPOGRASP_SANITIZE)
+  add_test(NAME "app: grasp_transfer names the target of a hand program not built"
+           COMMAND ${CMAKE_COMMAND}
+                   "-DCOMMAND=$<TARGET_FILE:grasp_transfer>;--hand;barrett;--quiet"
+                   "-DEXPECT=--hand: the program of the hand \"barrett\", grasp_transfer-barrett, is not built: cmake --build --preset release --target grasp_transfer-barrett"
+                   -DSTATUS=2 -DCOPY_TO=${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_alone
+                   -P ${PROJECT_SOURCE_DIR}/cmake/expect_failure.cmake)
+endif()
 # The transfer matrix (docs/results.md): a small run, one stable bottle demonstration to every
 # hand by the fingertip and virtual-finger baselines; bad arguments refused.
 add_test(NAME "app: transfer_matrix (small run)"

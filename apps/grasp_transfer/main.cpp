@@ -5,9 +5,13 @@
 // DIR/results.json and DIR/scenes/*.xml (MJCF), and with --figures DIR/figures/*.svg and
 // DIR/index.html, through a staging folder committed at the end
 // (apps/grasp_transfer/output_folder.hpp). The command line is parse_command_line
-// (apps/grasp_transfer/command_line.hpp); each hand's run is compiled apart (program.hpp).
+// (apps/grasp_transfer/command_line.hpp); each hand's run is compiled apart (program.hpp), and
+// grasp_transfer runs the program of a hand it does not hold, grasp_transfer-<hand> beside it.
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -16,6 +20,7 @@
 #include <iterator>
 #include <string>
 #include <string_view>
+#include <system_error>
 #include <vector>
 
 #include <grasp_transfer/program.hpp>
@@ -223,14 +228,77 @@ int merge(const CommandLine& cli, bool& started, bool& committing) {
   return 0;
 }
 
+#ifndef TOPOGRASP_SIBLING_HANDS
+#define TOPOGRASP_SIBLING_HANDS ""
+#endif
+
+// A hand that grasp_transfer runs through another program: grasp_transfer-<name> in the folder
+// of grasp_transfer (apps/CMakeLists.txt builds one for every shipped hand but the SDH).
+struct SiblingHand {
+  std::string name;
+  std::filesystem::path program;  // empty: this tree's build has not built it
+};
+
+// The sibling hands of this program: none unless it is grasp_transfer itself (a hand program of
+// topograsp_add_hand_program holds its one hand); the ones built beside it, and the ones this tree
+// builds (TOPOGRASP_SIBLING_HANDS) but has not built yet.
+std::vector<SiblingHand> sibling_hands(const char* argv0) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) self = fs::absolute(argv0, ec);
+  std::vector<SiblingHand> out;
+  if (ec || self.filename() != "grasp_transfer") return out;
+  const std::string prefix = "grasp_transfer-";
+  for (const fs::directory_entry& e : fs::directory_iterator(self.parent_path(), ec)) {
+    const std::string file = e.path().filename().string();
+    if (file.size() > prefix.size() && file.starts_with(prefix) && e.is_regular_file(ec) &&
+        ::access(e.path().c_str(), X_OK) == 0)
+      out.push_back({file.substr(prefix.size()), e.path()});
+  }
+  std::string_view built_here = TOPOGRASP_SIBLING_HANDS;
+  while (!built_here.empty()) {
+    const std::string_view name = built_here.substr(0, built_here.find(','));
+    built_here.remove_prefix(std::min(built_here.size(), name.size() + 1));
+    if (std::none_of(out.begin(), out.end(), [&](const SiblingHand& h) { return h.name == name; }))
+      out.push_back({std::string(name), {}});
+  }
+  std::sort(out.begin(), out.end(),
+            [](const SiblingHand& a, const SiblingHand& b) { return a.name < b.name; });
+  return out;
+}
+
 // The program's hands for --help.
-std::string hands_help() {
+std::string hands_help(const std::vector<SiblingHand>& siblings) {
+  const auto line = [](std::string_view name, const std::string& what) {
+    return "  " + std::string(name) + std::string(name.size() < 14 ? 14 - name.size() : 1, ' ') +
+           what + "\n";
+  };
   std::string text = "\nhands of this program (--hand):\n";
   for (const HandProgram& h : hand_programs())
-    text += "  " + std::string(h.name) +
-            std::string(h.name.size() < 14 ? 14 - h.name.size() : 1, ' ') + std::string(h.model) +
-            (&h == &hand_programs().front() ? " (the default)" : "") + "\n";
+    text += line(h.name,
+                 std::string(h.model) + (&h == &hand_programs().front() ? " (the default)" : ""));
+  for (const SiblingHand& h : siblings)
+    text += line(h.name,
+                 h.program.empty()
+                     ? "not built: cmake --build --preset release --target grasp_transfer-" + h.name
+                     : "run by " + h.program.filename().string());
   return text;
+}
+
+// Runs the sibling program of \p hand with this program's arguments in place of this process;
+// returns only if it cannot: throws naming --hand.
+[[noreturn]] void run_sibling(const SiblingHand& hand, char** argv) {
+  if (hand.program.empty())
+    throw invalid_argument("--hand: the program of the hand \"" + hand.name +
+                           "\", grasp_transfer-" + hand.name +
+                           ", is not built: cmake --build --preset release --target "
+                           "grasp_transfer-" +
+                           hand.name);
+  std::fflush(stdout);
+  ::execv(hand.program.c_str(), argv);
+  throw invalid_argument("--hand: cannot run \"" + hand.program.string() + "\" (" +
+                         std::error_code(errno, std::generic_category()).message() + ")");
 }
 
 }  // namespace
@@ -250,18 +318,21 @@ int main(int argc, char** argv) {
 #else
     constexpr bool mujoco_linked = false;
 #endif
+    const std::vector<SiblingHand> siblings = sibling_hands(argv[0]);
     std::vector<std::string_view> hands;
     for (const HandProgram& h : hand_programs()) hands.push_back(h.name);
+    for (const SiblingHand& h : siblings) hands.push_back(h.name);
     CommandLine cli = parse_command_line(args, mujoco_linked, hands);
     if (cli.help) {
-      std::fputs((command_line_usage() + hands_help()).c_str(), stdout);
+      std::fputs((command_line_usage() + hands_help(siblings)).c_str(), stdout);
       return 0;
     }
     if (cli.merge) return merge(cli, started, committing);
-    const auto hand =
-        std::find_if(hands.begin(), hands.end(), [&](std::string_view h) { return h == cli.hand; });
-    return hand_programs()[static_cast<std::size_t>(hand - hands.begin())].run(cli, started,
-                                                                               committing);
+    for (const HandProgram& h : hand_programs())
+      if (h.name == cli.hand) return h.run(cli, started, committing);
+    run_sibling(*std::find_if(siblings.begin(), siblings.end(),
+                              [&](const SiblingHand& h) { return h.name == cli.hand; }),
+                argv);
   } catch (const std::exception& e) {
     std::cerr << "grasp_transfer: " << e.what() << '\n';
     if (committing)
