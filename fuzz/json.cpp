@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Fuzz target: Json::parse (io/json.hpp) on any bytes.
+// Fuzz target: Json::parse (io/json.hpp) and json_field_line (io/json_position.hpp) on any bytes.
 //
 // - parse() is the strict reader it says it is: what it accepts has no \u escape without 4 hex
 //   digits and no number outside JSON's grammar (leading zeros, "+1", ".5", "1.").
@@ -8,7 +8,9 @@
 //   failure.
 // - A value that parses dumps (one-line and indented) to text that parses again, to an equal
 //   value: same kinds, same strings byte for byte, same keys in the same order, numbers equal.
+// - json_field_line, on any text, JSON or not, gives a line of the text (1 to its newlines + 1).
 
+#include <algorithm>
 #include <cstdint>
 #include <exception>
 #include <string>
@@ -17,6 +19,7 @@
 
 #include <topograsp/core/error.hpp>
 #include <topograsp/io/json.hpp>
+#include <topograsp/io/json_position.hpp>
 
 #include "fuzz_input.hpp"
 
@@ -130,6 +133,15 @@ std::string not_json(std::string_view t) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   return topograsp::fuzz::run_input(data, size, [&] {
     const std::string_view text(reinterpret_cast<const char*>(data), size);
+    const long lines = 1 + std::count(text.begin(), text.end(), '\n');
+    for (const std::string_view path : {"", "a", "a[0]", "a.b[1].c", "[2]"}) {
+      const int line = topograsp::json_field_line(text, path);
+      if (line < 1 || line > lines)
+        fuzz_fail("json",
+                  "json_field_line gave line " + std::to_string(line) + " of a text of " +
+                      std::to_string(lines),
+                  "text = " + c_literal(text) + "\npath = " + c_literal(path));
+    }
     Json value;
     try {
       value = Json::parse(text);

@@ -790,6 +790,24 @@ TEST_CASE("hands: a description that does not fit its hand file says where and w
     CHECK_THAT(description_failure(described(field)), Catch::StartsWith(message));
   }
   CHECK_THAT(description_failure("[1]"), Catch::StartsWith("hand.json: expected a JSON object"));
+  // With the description's text, the message names the line of the field too.
+  {
+    const std::string text =
+        "{\n  \"name\": \"h\",\n  \"palm_centre\": \"palm\",\n"
+        "  \"fingers\": [\n    {\"name\": \"index\",\n"
+        "     \"points\": [\"index_base\",\n                \"index_tipp\"]}]\n}";
+    ImportedHand h = import_hand_file(data_dir + "/three_finger.urdf");
+    CHECK_THROWS_WITH(describe_hand(h, Json::parse(text), "hand.json", text),
+                      Catch::StartsWith("hand.json:7: fingers[0].points[1]: \"index_tipp\" is no "
+                                        "link or frame of "));
+    ImportedHand g = import_hand_file(data_dir + "/three_finger.urdf");
+    const std::string no_thumb =
+        "{\n  \"name\": \"h\",\n  \"palm_centre\": \"palm\",\n"
+        "  \"fingers\": [{\"name\": \"index\", \"points\": "
+        "[\"index_base\", \"index_tip\"]}]\n}";
+    CHECK_THROWS_WITH(describe_hand(g, Json::parse(no_thumb), "hand.json", no_thumb),
+                      Catch::StartsWith("hand.json:1: thumb: missing"));
+  }
   ImportedHand h = import_hand_file(data_dir + "/three_finger.urdf");
   CHECK_THROWS_WITH(describe_hand_file(h, data_dir + "/no_such.json"),
                     Catch::EndsWith("no_such.json: cannot be opened"));

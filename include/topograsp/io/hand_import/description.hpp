@@ -22,6 +22,7 @@
 #include <topograsp/geometry/mass_properties.hpp>
 #include <topograsp/io/hand_import/common.hpp>
 #include <topograsp/io/json.hpp>
+#include <topograsp/io/json_position.hpp>
 #include <topograsp/model/name.hpp>
 #include <topograsp/model/spec.hpp>
 
@@ -47,7 +48,8 @@ namespace detail {
 
 class Describer {
  public:
-  Describer(ImportedHand& hand, std::string source) : h_(hand), source_(std::move(source)) {}
+  Describer(ImportedHand& hand, std::string source, std::string_view text)
+      : h_(hand), source_(std::move(source)), text_(text) {}
 
   HandDescription apply(const Json& doc) {
     if (!doc.is_object()) fail("", "expected a JSON object: {\"name\": ..., \"palm_centre\": ...}");
@@ -86,13 +88,16 @@ class Describer {
  private:
   ImportedHand& h_;
   std::string source_;
+  std::string_view text_;  // the description's text, for the line of a field; may be empty
 
   [[nodiscard]] std::string file() const {
     return std::filesystem::path(h_.source).filename().string();
   }
 
   [[noreturn]] void fail(const std::string& field, const std::string& what) const {
-    throw import_error(source_ + ": " + (field.empty() ? "" : field + ": ") + what);
+    const std::string line =
+        text_.empty() ? "" : ":" + std::to_string(json_field_line(text_, field));
+    throw import_error(source_ + line + ": " + (field.empty() ? "" : field + ": ") + what);
   }
 
   void known_keys(const Json& o, const std::string& field,
@@ -343,19 +348,21 @@ class Describer {
 /// lacks and give links without mass one from their collision shapes at a density (with a note),
 /// and the fingers, thumb and palm centre it names are checked against the hand's links and
 /// frames. Returns what the tool writes as the model (model_header()).
-/// \throws topograsp::import_error naming the description file, the field ("fingers[1].points[2]",
+/// \throws topograsp::import_error naming the description file, with \p text (the file's text)
+/// the line ("hand.json:7: ", json_field_line()), the field ("fingers[1].points[2]",
 /// "joints.wrist.hold") and what to write instead, for an unknown key, a name that is no link,
 /// joint or frame of the hand file (the message lists those it has), a missing thumb, fingers or
 /// palm centre, a closing direction or motor on a fixed joint, a held value outside the joint's
 /// limits, or a number out of range.
 [[nodiscard]] inline HandDescription describe_hand(ImportedHand& hand, const Json& doc,
-                                                   const std::string& source) {
-  return detail::Describer(hand, source).apply(doc);
+                                                   const std::string& source,
+                                                   std::string_view text = {}) {
+  return detail::Describer(hand, source, text).apply(doc);
 }
 
 /// Reads the hand description file at \p path (JSON) and applies it to \p hand (describe_hand()).
 /// \throws topograsp::import_error naming \p path for a file that cannot be read or is not JSON,
-/// and as describe_hand() does.
+/// and as describe_hand() does, with the line of the field.
 [[nodiscard]] inline HandDescription describe_hand_file(ImportedHand& hand,
                                                         const std::string& path) {
   std::ifstream f(path, std::ios::binary);
@@ -367,7 +374,7 @@ class Describer {
   } catch (const invalid_argument& e) {
     throw import_error(path + ": not JSON: " + e.what());
   }
-  return describe_hand(hand, doc, path);
+  return describe_hand(hand, doc, path, text);
 }
 
 }  // namespace topograsp
