@@ -739,6 +739,37 @@ TEST_CASE("hands: a description holds joints still, fills motors and gives links
   CHECK(link_named(h, "palm").mass == link_named(before, "palm").mass);
 }
 
+TEST_CASE("hands: a description's frame turned by its axes (xyaxes) is written exactly") {
+  ImportedHand h = import_hand_file(data_dir + "/three_finger.urdf");
+  const HandDescription desc = describe_hand(
+      h,
+      Json::parse(described(R"("frames": [{"name": "c", "link": "palm", "position": [0, 0, 0.01], )"
+                            R"("xyaxes": [0, 1, 0, 1, 0, 0]}, {"name": "d", "link": "palm", )"
+                            R"("xyaxes": [2, 0, 0, 1, 1, 0]}, {"name": "e", "link": "palm", )"
+                            R"("xyaxes": [1, 1, 0, 0, 0, 3]}], )")),
+      "hand.json");
+  REQUIRE(h.frames.size() >= 3);
+  const auto frame_named = [&](std::string_view n) {
+    return *std::find_if(h.frames.begin(), h.frames.end(),
+                         [&](const FrameSpec& f) { return f.name.view() == n; });
+  };
+  // x onto y, y onto x: z onto -z; every entry exact.
+  CHECK(frame_named("c").offset.R == std::array<double, 9>{0, 1, 0, 1, 0, 0, 0, 0, -1});
+  // The y axis is made square to x, both of unit length.
+  CHECK(frame_named("d").offset.R == std::array<double, 9>{1, 0, 0, 0, 1, 0, 0, 0, 1});
+  const Mat3 e = frame_named("e").offset.rotation();
+  CHECK((e.col(0) - Vec3(1, 1, 0).normalized()).norm() < 1e-15);
+  CHECK((e.col(2) - Vec3(1, -1, 0).normalized()).norm() < 1e-15);
+  CHECK((e.transpose() * e - Mat3::Identity()).norm() < 1e-15);
+  // The header writes a turn that takes axes onto axes as its matrix (a quaternion would bring
+  // 1/sqrt(2) and inexact zeros), any other as a quaternion.
+  const std::string header = model_header(h, "a", {}, &desc);
+  CHECK_THAT(header,
+             Catch::Contains(
+                 R"(frame("c", "palm", Pose{{0, 1, 0, 1, 0, 0, 0, 0, -1}, {0.0, 0.0, 0.01}}))") &&
+                 Catch::Contains(R"(frame("e", "palm", at(0.0, 0.0, 0.0).quat()"));
+}
+
 TEST_CASE("hands: a description that does not fit its hand file says where and what to write") {
   CHECK(description_failure(described("")) == "(no error)");
   CHECK_THAT(description_failure(described(R"("fingerz": [], )")),
@@ -784,6 +815,15 @@ TEST_CASE("hands: a description that does not fit its hand file says where and w
        "hand.json: frames[0].rpy: expected 3 numbers"},
       {R"("defaults": {"density": -1}, )",
        "hand.json: defaults.density: expected a number from 1 to"},
+      {R"("frames": [{"name": "c", "link": "palm", "rpy": [0, 0, 0], "xyaxes": [1, 0, 0, 0, 1, )"
+       R"(0]}], )",
+       "hand.json: frames[0]: give the rotation one way: \"rpy\", \"quaternion\" or \"xyaxes\""},
+      {R"("frames": [{"name": "c", "link": "palm", "xyaxes": [1, 0, 0, -2, 0, 0]}], )",
+       "hand.json: frames[0].xyaxes: expected two axes that are not zero nor parallel"},
+      {R"("frames": [{"name": "c", "link": "palm", "xyaxes": [0, 0, 0, 0, 1, 0]}], )",
+       "hand.json: frames[0].xyaxes: expected two axes that are not zero nor parallel"},
+      {R"("frames": [{"name": "c", "link": "palm", "xyaxes": [1, 0, 0]}], )",
+       "hand.json: frames[0].xyaxes: expected 6 numbers"},
   };
   for (const auto& [field, message] : cases) {
     CAPTURE(field);

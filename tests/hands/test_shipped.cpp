@@ -157,8 +157,63 @@ TEST_CASE("hands: the shipped hands have a thumb, fingers and a motor on every j
   check_actuators<models::allegro_hand>();
   check_actuators<models::leap_hand>();
   check_actuators<models::shadow_hand>();
-  CHECK(models::leap_hand.joint_spec(0).effort == models::leap_dynamics::torque);
-  CHECK(models::shadow_hand
-            .joint_spec(models::shadow_hand.links[models::shadow_hand.link("rh_thbase")].q)
-            .effort == models::shadow_dynamics::thj5_torque);
+}
+
+namespace {
+
+// Checks that \p model is what its description file data/hands/<name>.json says: its name, palm
+// centre, fingers and thumb, each joint's closing direction and motor, each frame.
+template <const auto& M>
+void check_description(const std::string& name) {
+  std::ifstream in(std::string(TOPOGRASP_DATA_DIR) + "/hands/" + name + ".json");
+  REQUIRE(in);
+  std::stringstream text;
+  text << in.rdbuf();
+  const Json doc = Json::parse(text.str());
+  CHECK(M.name.view() == doc.at("name").as_string());
+  CHECK(M.palm_name.view() == doc.at("palm_centre").as_string());
+  const auto check_chain = [](const FingerSpec& f, const Json& chain) {
+    CHECK(f.name.view() == chain.at("name").as_string());
+    const auto& points = chain.at("points").as_array();
+    for (std::size_t k = 0; k < points.size(); ++k)
+      CHECK(f.chain[k].view() == points[k].as_string());
+    if (points.size() < f.chain.size()) CHECK(f.chain[points.size()].view().empty());
+  };
+  const auto& fingers = doc.at("fingers").as_array();
+  REQUIRE(M.n_fingers == fingers.size() + 1);
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < M.n_fingers; ++i) {
+    CAPTURE(i);
+    check_chain(M.fingers[i].spec, static_cast<int>(i) == M.thumb ? doc.at("thumb") : fingers[k++]);
+  }
+  for (const auto& [joint, j] : doc.at("joints").as_object()) {
+    CAPTURE(joint);
+    const int l = link_index(M, joint);
+    REQUIRE(l >= 0);
+    const LinkSpec& spec = M.links[static_cast<std::size_t>(l)].spec;
+    CHECK(spec.closing == j.at("closes").as_number());
+    CHECK(spec.effort == j.at("effort").as_number());
+    CHECK(spec.velocity == j.at("velocity").as_number());
+  }
+  for (const Json& f : doc.at("frames").as_array()) {
+    const std::string frame = f.at("name").as_string();
+    CAPTURE(frame);
+    const int i = M.find_frame(frame);
+    REQUIRE(i >= 0);
+    const FrameSpec& spec = M.frames[static_cast<std::size_t>(i)].spec;
+    CHECK(spec.link.view() == f.at("link").as_string());
+    for (std::size_t c = 0; c < 3; ++c)
+      CHECK(spec.offset.p[c] == f.at("position").as_array()[c].as_number());
+    if (f.contains("xyaxes"))  // the frame's x and y axes: its rotation's first two columns
+      for (std::size_t c = 0; c < 6; ++c)
+        CHECK(spec.offset.R[3 * (c % 3) + c / 3] == f.at("xyaxes").as_array()[c].as_number());
+  }
+}
+
+}  // namespace
+
+TEST_CASE("hands: the shipped hands are what their description files say (data/hands)") {
+  check_description<models::allegro_hand>("allegro_hand");
+  check_description<models::leap_hand>("leap_hand");
+  check_description<models::shadow_hand>("shadow_hand");
 }

@@ -168,7 +168,7 @@ class Describer {
       const Json& f = list.as_array()[i];
       const std::string field = "frames[" + std::to_string(i) + "]";
       if (!f.is_object()) fail(field, "expected an object");
-      known_keys(f, field, {"name", "link", "position", "rpy", "quaternion"});
+      known_keys(f, field, {"name", "link", "position", "rpy", "quaternion", "xyaxes"});
       const std::string name = string_at(f, "name", field);
       const std::string link = string_at(f, "link", field);
       if (name.size() > max_name_length)
@@ -180,8 +180,8 @@ class Describer {
              "no link \"" + link + "\" in " + file() + " (links: " + link_list() + ")");
       Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
       if (f.contains("position")) T.translation() = vector_at<3>(f, "position", field);
-      if (f.contains("rpy") && f.contains("quaternion"))
-        fail(field, "give the rotation as \"rpy\" or as \"quaternion\", not both");
+      if (int(f.contains("rpy")) + int(f.contains("quaternion")) + int(f.contains("xyaxes")) > 1)
+        fail(field, "give the rotation one way: \"rpy\", \"quaternion\" or \"xyaxes\"");
       if (f.contains("rpy")) {
         const Vec3 a = vector_at<3>(f, "rpy", field);
         T.linear() =
@@ -194,6 +194,16 @@ class Describer {
         if (q.norm() < 1e-9)
           fail(field + ".quaternion", "expected a non-zero quaternion (w, x, y, z)");
         T.linear() = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
+      }
+      if (f.contains("xyaxes")) {  // MJCF's: the frame's x axis, then its y axis (made square)
+        const Eigen::Matrix<double, 6, 1> a = vector_at<6>(f, "xyaxes", field);
+        const Vec3 x = a.head<3>();
+        const Vec3 y = a.tail<3>() - a.tail<3>().dot(x) / x.squaredNorm() * x;
+        if (x.norm() < 1e-9 || y.norm() < 1e-9 * a.tail<3>().norm() || a.tail<3>().norm() < 1e-9)
+          fail(field + ".xyaxes", "expected two axes that are not zero nor parallel");
+        T.linear().col(0) = x.normalized();
+        T.linear().col(1) = y.normalized();
+        T.linear().col(2) = x.normalized().cross(y.normalized());
       }
       h_.frames.push_back(frame(Name(name), Name(link), to_pose(T)));
     }

@@ -36,9 +36,24 @@ inline void append_number(std::string& s, double v, bool clean = false) {
   s += t;
 }
 
-// The C++ code of pose p: at(x, y, z), with .quat(w, x, y, z) when it turns.
+// The C++ code of pose p: at(x, y, z), with .quat(w, x, y, z) when it turns; a turn that takes
+// each axis onto an axis (every entry of its matrix -1, 0 or 1) as Pose{{matrix}, {x, y, z}},
+// which keeps it exact (a quarter turn's quaternion has 1/sqrt(2) in it, and its matrix would
+// not have exact zeros).
 inline std::string pose_code(const Pose& p) {
-  std::string s = "at(";
+  const bool axes_onto_axes = std::all_of(
+      p.R.begin(), p.R.end(), [](double r) { return r == 0.0 || r == 1.0 || r == -1.0; });
+  const bool turns = p.R != Pose{}.R;
+  std::string s = axes_onto_axes && turns ? "Pose{{" : "at(";
+  if (axes_onto_axes && turns) {
+    for (std::size_t i = 0; i < 9; ++i)
+      s += std::string(p.R[i] == 0.0 ? "0" : p.R[i] > 0.0 ? "1" : "-1") + (i < 8 ? ", " : "}, {");
+    for (std::size_t i = 0; i < 3; ++i) {
+      append_number(s, p.p[i], true);
+      s += i < 2 ? ", " : "}}";
+    }
+    return s;
+  }
   for (std::size_t i = 0; i < 3; ++i) {
     append_number(s, p.p[i], true);
     s += i < 2 ? ", " : ")";
