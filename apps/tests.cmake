@@ -49,6 +49,7 @@ expect_rejected(grasp_transfer "" "unknown object|--objects anvil|--objects: unk
                       "bad jobs|--jobs zero|--jobs: expected a number"
                       "too many jobs|--jobs 100000|--jobs: expected 1 to 1024"
                       "unwritable out|--out /proc/grasp_transfer|--out: cannot"
+                      "--hands into an unwritable folder|--hands sdh --out /proc/grasp_transfer|--out: cannot create"
                       "unknown parameter|--set reach=1|unknown transfer parameter \"reach\""
                       "negative parameter|--set final_approach=-1|final_approach: must be in"
                       "parameter out of range|--set backoff=1e300|--set: backoff: must be in \\[0, 0.3\\]"
@@ -116,6 +117,22 @@ expect_rejected(grasp_transfer end_to_end
                 "an unknown hand|--hand robotiq|--hand: no hand \"robotiq\" in this program \\(sdh, allegro, barrett, leap, shadow\\)"
                 "a method on the arm for another hand|--hand allegro --methods closed_windings|methods: \"closed_windings\" runs with the SDH on the arm only"
                 "the arm setting for another hand|--hand leap --setting arm|arm_setting: the arm carries the SDH only")
+# --hands: the same run for several hands and the table of every hand; its shards merged; what
+# only the SDH runs refused before any hand runs.
+add_test(NAME "app: grasp_transfer --hands (small run)"
+         COMMAND grasp_transfer --hands sdh,barrett --objects bottle --max-hypotheses 2
+                 --methods topological,transplant --jobs 2 --quiet
+                 --out ${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_hands)
+set_tests_properties("app: grasp_transfer --hands (small run)" PROPERTIES
+                     LABELS end_to_end PASS_REGULAR_EXPRESSION "every hand's table in .*hands.md")
+add_test(NAME "app: grasp_transfer --hands shards merged"
+         COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:grasp_transfer>
+                 -DDIR=${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_hands_shards
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/grasp_transfer/hands_merge.cmake)
+set_tests_properties("app: grasp_transfer --hands shards merged" PROPERTIES LABELS end_to_end)
+expect_rejected(grasp_transfer end_to_end
+                "a method on the arm for a hand of --hands|--hands sdh,barrett --methods topological,closed_windings|--hands: barrett: --methods closed_windings runs with the SDH on the arm only"
+                "--hands with --hand|--hands sdh,barrett --hand sdh|--hands: not with --hand")
 # A hand whose program (grasp_transfer-<hand>) is not built: grasp_transfer, alone in a folder,
 # says which target builds it. Not in the sanitizer build, which has no other hand.
 if(NOT TOPOGRASP_SANITIZE)

@@ -31,6 +31,10 @@ struct CommandLine {
   /// --hand: the robot hand the demonstrations are transferred to, one of the program's hands
   /// (default its first: the SDH for grasp_transfer, docs/transfer.md "Any hand")
   std::string hand;
+  /// --hands: several of the program's hands, in the order given: the same run for each, into
+  /// DIR/<hand>/, and a table of every hand (DIR/hands.json, DIR/hands.md; docs/transfer.md,
+  /// "Several hands"). Empty without --hands.
+  std::vector<std::string> hands;
   std::filesystem::path out = "grasp_transfer_out";  ///< --out: the output folder (non-empty)
   bool quiet = false;    ///< --quiet: no progress lines (warnings are still printed)
   bool figures = false;  ///< --figures: also DIR/figures/*.svg and DIR/index.html
@@ -268,7 +272,8 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
                                                   "--hypotheses",
                                                   "--closing",
                                                   "--setting",
-                                                  "--hand"};
+                                                  "--hand",
+                                                  "--hands"};
     bool known = false;
     for (const std::string_view o : value_options) known = known || o == arg;
     if (!known)
@@ -296,6 +301,9 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
             arg, "no hand " + detail::quote_argument(value) + " in this program (" + list + ")");
       }
       cli.hand = std::string(value);
+    } else if (arg == "--hands") {
+      for (const std::string_view h : detail::split_cli_list(value, arg, hand_names, "hand"))
+        cli.hands.emplace_back(h);
     } else if (arg == "--demonstrations") {
       cli.experiment.demonstrations = detail::read_demonstrations(value);
     } else if (arg == "--methods") {
@@ -403,6 +411,8 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
       set(detail::parse_cli_number<double>(value.substr(eq + 1), "--set " + std::string(name)));
     }
   }
+  if (!cli.hands.empty() && std::find(seen.begin(), seen.end(), "--hand") != seen.end())
+    detail::throw_invalid_argument("--hands", "not with --hand: give the hands in one list");
   if (!cli.experiment.demonstrations.empty()) {
     // The recordings' objects, in the order they first come.
     if (std::find(seen.begin(), seen.end(), "--objects") != seen.end())
@@ -457,6 +467,10 @@ options:
                    (docs/transfer.md, "Any hand"); every run first checks the hand
                    (check_hand: its palm frame, closing directions, motors and masses, and a
                    ball and a cylinder closed at its palm) and stops if it fails
+  --hands A,B,...  the same run for each of these hands, one after another, each into DIR/<hand>
+                   (its own results, scenes, figures, journal: --resume, --shard and merge
+                   work hand by hand), then DIR/hands.json and DIR/hands.md: every hand's
+                   rates side by side (docs/transfer.md, "Several hands"); not with --hand
   --skip-hand-check  run even if the hand fails its self-check
   --demonstrations FILE_OR_DIR  recorded human grasps (21 hand keypoints each, the JSON format
                    of docs/transfer.md; a folder: its *.json files by name) as the

@@ -7,6 +7,8 @@
 // (apps/grasp_transfer/output_folder.hpp). The command line is parse_command_line
 // (apps/grasp_transfer/command_line.hpp); each hand's run is compiled apart (program.hpp), and
 // grasp_transfer runs the program of a hand it does not hold, grasp_transfer-<hand> beside it.
+#include <spawn.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -18,11 +20,13 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <span>
 #include <string>
 #include <string_view>
 #include <system_error>
 #include <vector>
 
+#include <grasp_transfer/hands_table.hpp>
 #include <grasp_transfer/program.hpp>
 
 namespace topograsp::app {
@@ -205,8 +209,64 @@ std::string read_file(const std::filesystem::path& path, const std::string& what
   return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
 }
 
+// The --hands table of the folder dir: each hand's results.json read, hands.json and hands.md
+// written (each whole or not at all), the table printed.
+void write_hands_table(const std::filesystem::path& dir, const std::vector<std::string>& hands) {
+  std::vector<HandRun> runs;
+  for (const std::string& h : hands) {
+    const std::string results = h + "/results.json";
+    runs.push_back({h, results, Json::parse(read_file(dir / results, "--hands"))});
+  }
+  const Json summary = hands_summary(runs);
+  const std::string table = hands_markdown(summary);
+  detail::write_text_file(dir / "hands.json", summary.dump(2) + "\n");
+  detail::write_text_file(dir / "hands.md", table);
+  std::printf("\n%s\nevery hand's table in %s\n", table.c_str(),
+              (dir / "hands.md").string().c_str());
+}
+
+// The names of the hands of a --hands run's folder (its hands.json), or none.
+std::vector<std::string> hands_of(const std::filesystem::path& dir) {
+  std::vector<std::string> out;
+  if (!std::filesystem::is_regular_file(dir / "hands.json")) return out;
+  const Json doc = Json::parse(read_file(dir / "hands.json", "merge"));
+  if (!doc.contains("hands") || !doc.at("hands").is_array())
+    throw invalid_argument("merge: \"" + (dir / "hands.json").string() +
+                           "\" is not the table of a grasp_transfer --hands run");
+  for (const Json& h : doc.at("hands").as_array()) out.push_back(h.at("hand").as_string());
+  return out;
+}
+
+int merge(const CommandLine& cli, bool& started, bool& committing);
+
+// grasp_transfer merge of the shards of a --hands run: each hand's shards merged into DIR/<hand>,
+// then the table of every hand. The shards must hold the same hands.
+int merge_hands(const CommandLine& cli, const std::vector<std::string>& hands, bool& started,
+                bool& committing) {
+  for (const std::filesystem::path& dir : cli.shards)
+    if (hands_of(dir) != hands)
+      throw invalid_argument("merge: \"" + dir.string() + "\" holds other hands than \"" +
+                             cli.shards.front().string() + "\" (each hands.json names them)");
+  std::error_code ec;
+  if (std::filesystem::create_directories(cli.out, ec); ec)
+    throw invalid_argument("--out: cannot create \"" + cli.out.string() + "\" (" + ec.message() +
+                           ")");
+  for (const std::string& h : hands) {
+    CommandLine one = cli;
+    one.out = cli.out / h;
+    for (std::filesystem::path& dir : one.shards) dir /= h;
+    if (!cli.quiet) std::printf("== %s\n", h.c_str());
+    (void)merge(one, started, committing);
+    committing = false;
+  }
+  write_hands_table(cli.out, hands);
+  return 0;
+}
+
 // grasp_transfer merge: the shards' results.json and scenes into one output folder.
 int merge(const CommandLine& cli, bool& started, bool& committing) {
+  if (const std::vector<std::string> hands = hands_of(cli.shards.front()); !hands.empty())
+    return merge_hands(cli, hands, started, committing);
   OutputFolder folder(cli.out, cli.force, "--out");
   std::vector<Json> docs;
   for (const std::filesystem::path& dir : cli.shards) {
@@ -286,19 +346,103 @@ std::string hands_help(const std::vector<SiblingHand>& siblings) {
   return text;
 }
 
+// What says that the program of the hand \p name is not built, and how to build it.
+std::string not_built(const std::string& name) {
+  return "the program of the hand \"" + name + "\", grasp_transfer-" + name +
+         ", is not built: cmake --build --preset release --target grasp_transfer-" + name;
+}
+
 // Runs the sibling program of \p hand with this program's arguments in place of this process;
 // returns only if it cannot: throws naming --hand.
 [[noreturn]] void run_sibling(const SiblingHand& hand, char** argv) {
-  if (hand.program.empty())
-    throw invalid_argument("--hand: the program of the hand \"" + hand.name +
-                           "\", grasp_transfer-" + hand.name +
-                           ", is not built: cmake --build --preset release --target "
-                           "grasp_transfer-" +
-                           hand.name);
+  if (hand.program.empty()) throw invalid_argument("--hand: " + not_built(hand.name));
   std::fflush(stdout);
   ::execv(hand.program.c_str(), argv);
   throw invalid_argument("--hand: cannot run \"" + hand.program.string() + "\" (" +
                          std::error_code(errno, std::generic_category()).message() + ")");
+}
+
+// grasp_transfer --hands A,B,...: this program run once for each hand, with the same arguments
+// but --hand <hand> and --out DIR/<hand>, one after another (each its own output folder,
+// journal and shards); with --resume a hand whose results.json holds a finished run of the same
+// options is not run again. Then the table of every hand. A hand's run that fails ends the whole:
+// its exit status (1 once an earlier hand has finished), the hands before it kept.
+int run_hands(const CommandLine& cli, std::span<const std::string_view> args,
+              const std::vector<SiblingHand>& siblings, bool& started) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) throw invalid_argument("--hands: cannot find this program (/proc/self/exe)");
+  if (fs::exists(cli.out) && !fs::is_directory(cli.out))
+    throw invalid_argument("--out: \"" + cli.out.string() + "\" exists and is not a folder");
+  // What only the SDH runs, refused for the other hands before any of them runs.
+  for (const std::string& h : cli.hands) {
+    const auto p = std::find_if(hand_programs().begin(), hand_programs().end(),
+                                [&](const HandProgram& hp) { return hp.name == h; });
+    const bool sdh = p != hand_programs().end() && p->model == models::schunk_sdh.name.view();
+    if (sdh) continue;
+    for (const TransferMethod m : cli.experiment.methods)
+      if (!any_hand_method(m))
+        throw invalid_argument("--hands: " + h + ": --methods " + std::string(to_string(m)) +
+                               " runs with the SDH on the arm only");
+    if (cli.experiment.arm_setting)
+      throw invalid_argument("--hands: " + h + ": --setting arm: the arm carries the SDH only");
+    if (const auto s = std::find_if(siblings.begin(), siblings.end(),
+                                    [&](const SiblingHand& sh) { return sh.name == h; });
+        s != siblings.end() && s->program.empty())
+      throw invalid_argument("--hands: " + not_built(h));
+  }
+  if (fs::create_directories(cli.out, ec); ec)
+    throw invalid_argument("--out: cannot create \"" + cli.out.string() + "\" (" + ec.message() +
+                           ")");
+  // The arguments of each hand's run: these but --hands and --out.
+  std::vector<std::string> common;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--hands" || args[i] == "--out") {
+      ++i;
+      continue;
+    }
+    common.emplace_back(args[i]);
+  }
+  for (const std::string& h : cli.hands) {
+    const fs::path dir = cli.out / h;
+    if (cli.resume && fs::is_regular_file(dir / "results.json")) {
+      const Json done = Json::parse(read_file(dir / "results.json", "--resume"));
+      if (done.contains("config") && done.at("config").contains("hand") &&
+          done.at("config").at("hand").is_string() &&
+          done.at("config").dump(0) ==
+              results_config(cli.experiment, done.at("config").at("hand").as_string()).dump(0)) {
+        std::printf("== %s: finished in %s, not run again\n", h.c_str(), dir.string().c_str());
+        continue;
+      }
+    }
+    std::vector<std::string> words{self.string()};
+    words.insert(words.end(), common.begin(), common.end());
+    words.insert(words.end(), {"--hand", h, "--out", dir.string()});
+    std::vector<char*> argv;
+    for (std::string& w : words) argv.push_back(w.data());
+    argv.push_back(nullptr);
+    if (!cli.quiet) std::printf("== %s\n", h.c_str());
+    std::fflush(stdout);
+    pid_t pid = 0;
+    if (const int e = ::posix_spawn(&pid, self.c_str(), nullptr, nullptr, argv.data(), environ);
+        e != 0)
+      throw invalid_argument("--hands: cannot run \"" + self.string() + "\" (" +
+                             std::error_code(e, std::generic_category()).message() + ")");
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+    if (code != 0) {
+      std::fprintf(stderr, "grasp_transfer: --hands: the run of %s failed (exit %d)%s\n", h.c_str(),
+                   code, started ? "; the hands before it are finished in their folders" : "");
+      return started ? 1 : code;
+    }
+    started = true;
+  }
+  started = true;
+  write_hands_table(cli.out, cli.hands);
+  return 0;
 }
 
 }  // namespace
@@ -328,6 +472,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (cli.merge) return merge(cli, started, committing);
+    if (!cli.hands.empty()) return run_hands(cli, args, siblings, started);
     for (const HandProgram& h : hand_programs())
       if (h.name == cli.hand) return h.run(cli, started, committing);
     run_sibling(*std::find_if(siblings.begin(), siblings.end(),

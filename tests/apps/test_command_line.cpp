@@ -171,6 +171,26 @@ TEST_CASE("the option --hand picks one of the program's hands, the first by defa
   CHECK(error_of({"--hand", "allegro"}) == "--hand: no hand \"allegro\" in this program (sdh)");
 }
 
+TEST_CASE("the option --hands lists several of the program's hands, in the order given",
+          "[io][command_line]") {
+  const std::vector<std::string_view> hands{"sdh", "allegro", "shadow"};
+  const auto parse_hands = [&](std::initializer_list<std::string_view> args) {
+    const std::vector<std::string_view> v(args);
+    return parse_command_line(v, false, hands);
+  };
+  CHECK(parse_hands({}).hands.empty());
+  CHECK(parse_hands({"--hands", "shadow,sdh"}).hands == std::vector<std::string>{"shadow", "sdh"});
+  CHECK_THROWS_WITH(parse_hands({"--hands", "shadow,barrett"}),
+                    "--hands: unknown hand \"barrett\" (expected sdh, allegro or shadow)");
+  CHECK_THROWS_WITH(parse_hands({"--hands", "sdh,sdh"}),
+                    "--hands: \"sdh\" is given twice in \"sdh,sdh\"");
+  CHECK_THROWS_WITH(parse_hands({"--hands", "sdh,"}),
+                    Catch::StartsWith("--hands: empty name in \"sdh,\""));
+  CHECK_THROWS_WITH(parse_hands({"--hands", "sdh", "--hand", "allegro"}),
+                    "--hands: not with --hand: give the hands in one list");
+  CHECK_THROWS_WITH(parse_hands({"--hands", "sdh", "--hands", "allegro"}), "--hands: given twice");
+}
+
 TEST_CASE("the resume flag, and merge with the shards' folders", "[io][command_line]") {
   CHECK_FALSE(parse({}).resume);
   CHECK(parse({"--resume"}).resume);
