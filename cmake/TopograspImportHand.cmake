@@ -103,9 +103,10 @@ function(topograsp_add_hand_program program)
 TOPOGRASP_HAND_PROGRAM(\"${arg_NAME}\", ${arg_NAME}::model)\n")
   # The hand's unit is an object library of its own, so that it compiles beside main.cpp and
   # human.cpp (a program's sources wait for the targets it links to be built). Those two are
-  # compiled by topograsp's own build where it builds grasp_transfer.
+  # compiled by topograsp's own build where it builds grasp_transfer. The unit is built for the
+  # program only (EXCLUDE_FROM_ALL): a program left out of "all" leaves its hand out too.
   set(unit ${program}_hand)
-  add_library(${unit} OBJECT ${hand_source})
+  add_library(${unit} OBJECT EXCLUDE_FROM_ALL ${hand_source})
   add_executable(${program} $<TARGET_OBJECTS:${unit}>)
   if(TARGET topograsp_grasp_transfer_objects)
     target_link_libraries(${program} PRIVATE topograsp_grasp_transfer_objects)
