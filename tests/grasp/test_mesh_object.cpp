@@ -48,8 +48,11 @@ TEST_CASE("a mesh can has the mesh's mass properties and BADGr's boxes", "[grasp
   // The hypotheses come from the same boxes: four per reachable face.
   CHECK_FALSE(o.boxes.empty());
   CHECK(box_hypotheses(o).size() >= 4 * o.boxes.size());
-  // Without a mass: the material's density times the mesh's volume.
-  const GraspObject solid = mesh_object("solid", can, materials::aluminium);
+  // Without a mass: the material's density times the mesh's volume (the boxes are not what this
+  // checks: a coarse spacing keeps the decomposition cheap).
+  MeshObjectOptions coarse;
+  coarse.spacing = 0.02;
+  const GraspObject solid = mesh_object("solid", can, materials::aluminium, 0.0, coarse);
   const double volume = mesh_mass_properties(can, 1.0).mass;
   CHECK(solid.mass == Approx(2700.0 * volume).epsilon(1e-12));
   CHECK(volume == Approx(pi * r * r * h).epsilon(3e-3));
@@ -87,7 +90,11 @@ TEST_CASE("mesh_object refuses bad input naming it", "[grasp][mesh][bad-input]")
   Material airy = materials::pet;
   airy.density = 0.0;
   CHECK_THROWS_WITH(mesh_object("o", can, airy), Catch::StartsWith("material.density: "));
-  CHECK_NOTHROW(mesh_object("o", can, airy, 0.2));  // a given mass needs no density
+  // The objects this test makes are not what it checks: a coarse spacing keeps their
+  // decompositions cheap (under the sanitizers they took a minute at the default).
+  MeshObjectOptions coarse;
+  coarse.spacing = 0.02;
+  CHECK_NOTHROW(mesh_object("o", can, airy, 0.2, coarse));  // a given mass needs no density
   MeshObjectOptions bad;
   bad.spacing = 0.0;
   CHECK_THROWS_WITH(mesh_object("o", can, materials::pet, 0.2, bad),
@@ -97,7 +104,7 @@ TEST_CASE("mesh_object refuses bad input naming it", "[grasp][mesh][bad-input]")
   CHECK_THROWS_WITH(mesh_object("o", can, materials::pet, 0.2, bad),
                     Catch::StartsWith("options.decomposition: "));
   // A GraspObject whose inertial disagrees with its mass is refused by validate().
-  GraspObject o = mesh_object("o", can, materials::pet, 0.2);
+  GraspObject o = mesh_object("o", can, materials::pet, 0.2, coarse);
   o.inertial->mass = 0.3;
   CHECK_THROWS_WITH(o.validate(), Catch::StartsWith("o.inertial.mass: "));
 }
