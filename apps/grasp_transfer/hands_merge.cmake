@@ -3,27 +3,13 @@
 # grasp_transfer --hands sdh,barrett: a small run whole, then as shards 1/2 and 2/2 merged; the
 # merged folder has every hand's results.json and the same table of every hand (hands.md) as the
 # whole run. Then --resume of the whole run runs no hand again.
+include(${CMAKE_CURRENT_LIST_DIR}/run_program.cmake)
 file(REMOVE_RECURSE "${DIR}")
 set(run --hands sdh,barrett --judge builtin --max-hypotheses 4 --objects bottle
         --methods topological,transplant --jobs 2 --quiet)
-execute_process(COMMAND "${PROGRAM}" ${run} --out "${DIR}/whole" RESULT_VARIABLE status
-                OUTPUT_QUIET ERROR_VARIABLE err)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "the whole run failed (${status}): ${err}")
-endif()
-foreach(k 1 2)
-  execute_process(COMMAND "${PROGRAM}" ${run} --shard ${k}/2 --out "${DIR}/shard${k}"
-                  RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE err)
-  if(NOT status EQUAL 0)
-    message(FATAL_ERROR "shard ${k}/2 failed (${status}): ${err}")
-  endif()
-endforeach()
-execute_process(COMMAND "${PROGRAM}" merge --quiet --out "${DIR}/merged" "${DIR}/shard1"
-                        "${DIR}/shard2"
-                RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "merge failed (${status}): ${err}")
-endif()
+run_program("the whole run" ${run} --out "${DIR}/whole")
+run_two_shards_merged("${DIR}" 1 2 ${run})
+set(out "${run_output}")
 foreach(hand sdh barrett)
   if(NOT EXISTS "${DIR}/merged/${hand}/results.json")
     message(FATAL_ERROR "the merge wrote no ${hand}/results.json: ${out}")

@@ -3,21 +3,11 @@
 # Runs shards 1/2 and 2/2 of a small run, merges them, and checks that the merged folder has a
 # results.json and every scene the shards wrote; then that a merge with a shard missing fails
 # with exit status 2, naming it.
+include(${CMAKE_CURRENT_LIST_DIR}/run_program.cmake)
 file(REMOVE_RECURSE "${DIR}")
 set(run --judge builtin --max-hypotheses 6 --objects bottle --quiet)
-foreach(k 1 2)
-  execute_process(COMMAND "${PROGRAM}" ${run} --shard ${k}/2 --out "${DIR}/shard${k}"
-                  RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE err)
-  if(NOT status EQUAL 0)
-    message(FATAL_ERROR "shard ${k}/2 failed (${status}): ${err}")
-  endif()
-endforeach()
-execute_process(COMMAND "${PROGRAM}" merge --quiet --out "${DIR}/merged" "${DIR}/shard2"
-                        "${DIR}/shard1"
-                RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "merge failed (${status}): ${err}")
-endif()
+run_two_shards_merged("${DIR}" 2 1 ${run})
+set(out "${run_output}")
 if(NOT out MATCHES "2 shard\\(s\\) merged" OR NOT EXISTS "${DIR}/merged/results.json")
   message(FATAL_ERROR "merge printed no summary or wrote no results.json: ${out}")
 endif()
