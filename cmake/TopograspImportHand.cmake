@@ -109,10 +109,16 @@ TOPOGRASP_HAND_PROGRAM(\"${arg_NAME}\", ${arg_NAME}::model)\n")
   add_library(${unit} OBJECT EXCLUDE_FROM_ALL ${hand_source})
   add_executable(${program} $<TARGET_OBJECTS:${unit}>)
   if(TARGET topograsp_grasp_transfer_objects)
-    target_link_libraries(${program} PRIVATE topograsp_grasp_transfer_objects)
+    target_link_libraries(${program} PRIVATE topograsp_grasp_transfer_objects
+                                             topograsp_grasp_transfer_human)
+    target_link_libraries(${unit} PRIVATE topograsp_grasp_transfer_human)
   else()
     target_sources(${program} PRIVATE ${apps}/grasp_transfer/main.cpp
                                       ${apps}/grasp_transfer/human.cpp)
+    # human.cpp compiles the human hand's side once; the other units declare it compiled.
+    foreach(target IN ITEMS ${unit} ${program})
+      target_compile_definitions(${target} PRIVATE TOPOGRASP_EXTERN_HUMAN_DEMONSTRATIONS)
+    endforeach()
   endif()
   foreach(target IN ITEMS ${unit} ${program})
     target_include_directories(${target} PRIVATE ${apps})

@@ -1,15 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The human hand's side of grasp_transfer (program.hpp), the same whatever hand the
 // demonstrations go to: its demonstrations, their MuJoCo judge and their scenes, compiled once
-// for every hand of the program rather than in each hand's translation unit.
+// for every hand of the program rather than in each hand's translation unit (the programs' units
+// define TOPOGRASP_EXTERN_HUMAN_DEMONSTRATIONS: apps/CMakeLists.txt, topograsp_add_hand_program).
 #include <grasp_transfer/program.hpp>
-
-namespace topograsp {
-template HumanGrasp demonstrate<void>(const GraspObject&, const GraspHypothesis&, int,
-                                      const GraspSimOptions&);
-template HumanGrasp demonstrate_recorded<void>(const GraspObject&, const KeypointGrasp&, int,
-                                               const GraspSimOptions&, KeypointFit*);
-}  // namespace topograsp
+#include <topograsp/grasp/human_side.hpp>
 
 namespace topograsp::app {
 

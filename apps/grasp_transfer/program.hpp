@@ -30,14 +30,6 @@
 #include <topograsp/mujoco/mujoco_scene.hpp>
 #endif
 
-// The human hand's side of the program, the same for every hand: compiled once, in human.cpp.
-namespace topograsp {
-extern template HumanGrasp demonstrate<void>(const GraspObject&, const GraspHypothesis&, int,
-                                             const GraspSimOptions&);
-extern template HumanGrasp demonstrate_recorded<void>(const GraspObject&, const KeypointGrasp&, int,
-                                                      const GraspSimOptions&, KeypointFit*);
-}  // namespace topograsp
-
 namespace topograsp::app {
 
 /// The MJCF scene of the demonstration \p g (grasp_mjcf of the human hand; human.cpp).

@@ -293,4 +293,11 @@ template <class = void>
   return g;
 }
 
+#ifdef TOPOGRASP_EXTERN_HUMAN_DEMONSTRATIONS
+// Compiled once, in the one translation unit that includes grasp/human_side.hpp
+// (docs/benchmarks.md, "The human hand's side, compiled once").
+extern template HumanGrasp demonstrate<void>(const GraspObject&, const GraspHypothesis&, int,
+                                             const GraspSimOptions&);
+#endif
+
 }  // namespace topograsp

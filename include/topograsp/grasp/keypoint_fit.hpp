@@ -216,4 +216,11 @@ template <class = void>
   return g;
 }
 
+#ifdef TOPOGRASP_EXTERN_HUMAN_DEMONSTRATIONS
+// Compiled once, in the one translation unit that includes grasp/human_side.hpp
+// (docs/benchmarks.md, "The human hand's side, compiled once").
+extern template HumanGrasp demonstrate_recorded<void>(const GraspObject&, const KeypointGrasp&, int,
+                                                      const GraspSimOptions&, KeypointFit*);
+#endif
+
 }  // namespace topograsp
