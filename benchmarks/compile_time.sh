@@ -60,7 +60,8 @@ for unit in "${units[@]}"; do
         grasp_transfer_human) source=$root/apps/grasp_transfer/human.cpp ;;
         grasp_transfer_main) source=$root/apps/grasp_transfer/main.cpp ;;
       esac
-      extra=(-I"$root/apps" "${optional[@]}")
+      # As the build compiles them: the human hand's side compiled once, in human.cpp.
+      extra=(-I"$root/apps" -DTOPOGRASP_EXTERN_HUMAN_DEMONSTRATIONS "${optional[@]}")
       ;;
     test_*)
       module=${unit#test_}
@@ -71,6 +72,10 @@ for unit in "${units[@]}"; do
       source=$work/$unit.cpp
       for file in "$root"/tests/"$module"/*.cpp; do echo "#include \"$file\""; done > "$source"
       extra=(-I"$root/tests" -DEIGEN_RUNTIME_NO_MALLOC "${optional[@]}")
+      # The modules that call the human hand's side link it compiled (tests/CMakeLists.txt).
+      case $module in
+        any_hand | apps | grasp) extra+=(-DTOPOGRASP_EXTERN_HUMAN_DEMONSTRATIONS) ;;
+      esac
       ;;
     *) source=$root/benchmarks/compile_time/$unit.cpp ;;
   esac

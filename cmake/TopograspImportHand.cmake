@@ -108,17 +108,17 @@ TOPOGRASP_HAND_PROGRAM(\"${arg_NAME}\", ${arg_NAME}::model)\n")
   set(unit ${program}_hand)
   add_library(${unit} OBJECT EXCLUDE_FROM_ALL ${hand_source})
   add_executable(${program} $<TARGET_OBJECTS:${unit}>)
+  # human.cpp compiles the human hand's side once; the other units declare it compiled there (the
+  # hand's unit by the definition alone: linking topograsp_grasp_transfer_human would make it
+  # wait for human.cpp).
+  target_compile_definitions(${unit} PRIVATE TOPOGRASP_EXTERN_HUMAN_DEMONSTRATIONS)
   if(TARGET topograsp_grasp_transfer_objects)
     target_link_libraries(${program} PRIVATE topograsp_grasp_transfer_objects
                                              topograsp_grasp_transfer_human)
-    target_link_libraries(${unit} PRIVATE topograsp_grasp_transfer_human)
   else()
     target_sources(${program} PRIVATE ${apps}/grasp_transfer/main.cpp
                                       ${apps}/grasp_transfer/human.cpp)
-    # human.cpp compiles the human hand's side once; the other units declare it compiled.
-    foreach(target IN ITEMS ${unit} ${program})
-      target_compile_definitions(${target} PRIVATE TOPOGRASP_EXTERN_HUMAN_DEMONSTRATIONS)
-    endforeach()
+    target_compile_definitions(${program} PRIVATE TOPOGRASP_EXTERN_HUMAN_DEMONSTRATIONS)
   endif()
   foreach(target IN ITEMS ${unit} ${program})
     target_include_directories(${target} PRIVATE ${apps})

@@ -36,7 +36,8 @@ ExperimentOptions barrett_options() {
 
 }  // namespace
 
-#ifndef TOPOGRASP_NO_END_TO_END_TESTS  // (tests/CMakeLists.txt: not in the sanitizer build)
+// Left out where no end-to-end test runs (the sanitizer build, tests/CMakeLists.txt).
+#ifndef TOPOGRASP_TESTS_RUN_NO_END_TO_END
 TEST_CASE("the experiment on the Barrett hand: records by its joint names, scenes, schema",
           "[grasp][experiment][end_to_end]") {
   ExperimentOptions c = barrett_options();
