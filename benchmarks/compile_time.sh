@@ -19,8 +19,11 @@
 #   sdh_on_arm              the README tour's transfer: the SDH on the arm, transfer_topological
 #   grasp_transfer_sdh      the main example's SDH, apps/grasp_transfer/hands/sdh.cpp
 #   hand_program            one imported hand's grasp_transfer (apps/grasp_transfer/hands/allegro.cpp,
-#                           the unit topograsp_add_hand_program generates for a user's hand)
-#   grasp_transfer_human    the human hand's side of every hand program, human.cpp
+#                           as the program unit topograsp_add_hand_program generates for a user's hand)
+#   hand_compiled           that hand's transfer steps compiled once (compiled/allegro.cpp, as the
+#                           hand's second generated unit)
+#   hand_independent        the hand-independent templates compiled once, compiled/hand_independent.cpp
+#   grasp_transfer_human    the human hand's scenes and MuJoCo judge, human.cpp
 #   grasp_transfer_main     the program's command line and merge, main.cpp
 #   test_<module>           a test module as CMake builds it (its files in one unity unit)
 # Nothing is built or run besides the compiler; objects go to a temporary folder.
@@ -32,7 +35,8 @@ repeat=${REPEAT:-1}
 units=("$@")
 if ((${#units[@]} == 0)); then
   units=(tour_kinematics hand_kinematics imported_hand_transfer sdh_on_arm grasp_transfer_sdh
-         hand_program grasp_transfer_human grasp_transfer_main test_any_hand)
+         hand_program hand_compiled hand_independent grasp_transfer_human grasp_transfer_main
+         test_any_hand)
 fi
 if [[ ! -x /usr/bin/time ]]; then
   echo "compile_time.sh: needs GNU time (/usr/bin/time, Debian package time)" >&2
@@ -53,15 +57,20 @@ echo "| --- | --- | --- |"
 for unit in "${units[@]}"; do
   extra=()
   case $unit in
-    grasp_transfer_sdh | hand_program | grasp_transfer_human | grasp_transfer_main)
+    grasp_transfer_sdh | hand_program | hand_compiled | hand_independent | grasp_transfer_human | \
+      grasp_transfer_main)
       case $unit in
         grasp_transfer_sdh) source=$root/apps/grasp_transfer/hands/sdh.cpp ;;
         hand_program) source=$root/apps/grasp_transfer/hands/allegro.cpp ;;
+        hand_compiled) source=$root/apps/grasp_transfer/compiled/allegro.cpp ;;
+        hand_independent) source=$root/apps/grasp_transfer/compiled/hand_independent.cpp ;;
         grasp_transfer_human) source=$root/apps/grasp_transfer/human.cpp ;;
         grasp_transfer_main) source=$root/apps/grasp_transfer/main.cpp ;;
       esac
-      # As the build compiles them: the human hand's side compiled once, in human.cpp.
-      extra=(-I"$root/apps" -DTOPOGRASP_EXTERN_HUMAN_DEMONSTRATIONS "${optional[@]}")
+      # As the build compiles them: the hand-independent templates and the shipped hands'
+      # transfer steps compiled once (apps/CMakeLists.txt).
+      extra=(-I"$root/apps" -DTOPOGRASP_EXTERN_HAND_INDEPENDENT -DEIGEN_RUNTIME_NO_MALLOC
+        "${optional[@]}")
       ;;
     test_*)
       module=${unit#test_}
@@ -70,11 +79,16 @@ for unit in "${units[@]}"; do
         exit 2
       fi
       source=$work/$unit.cpp
-      for file in "$root"/tests/"$module"/*.cpp; do echo "#include \"$file\""; done > "$source"
-      extra=(-I"$root/tests" -DEIGEN_RUNTIME_NO_MALLOC "${optional[@]}")
-      # The modules that call the human hand's side link it compiled (tests/CMakeLists.txt).
+      # The modules that link the compiled templates (tests/CMakeLists.txt) declare them
+      # compiled elsewhere; those that transfer to shipped hands start with shipped_hands.hpp.
       case $module in
-        any_hand | apps | grasp) extra+=(-DTOPOGRASP_EXTERN_HUMAN_DEMONSTRATIONS) ;;
+        any_hand | apps | grasp) echo "#include <grasp_transfer/shipped_hands.hpp>" ;;
+        *) : ;;
+      esac > "$source"
+      for file in "$root"/tests/"$module"/*.cpp; do echo "#include \"$file\""; done >> "$source"
+      extra=(-I"$root/tests" -I"$root/apps" -DEIGEN_RUNTIME_NO_MALLOC "${optional[@]}")
+      case $module in
+        any_hand | apps | grasp | evaluation) extra+=(-DTOPOGRASP_EXTERN_HAND_INDEPENDENT) ;;
       esac
       ;;
     *) source=$root/benchmarks/compile_time/$unit.cpp ;;

@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The human hand's side of grasp_transfer (program.hpp), the same whatever hand the
-// demonstrations go to: its demonstrations, their MuJoCo judge and their scenes, compiled once
-// for every hand of the program rather than in each hand's translation unit (the programs' units
-// define TOPOGRASP_EXTERN_HUMAN_DEMONSTRATIONS: apps/CMakeLists.txt, topograsp_add_hand_program).
+// demonstrations go to: the MuJoCo judge and the scenes of its demonstrations, compiled once for
+// every hand of the program rather than in each hand's translation unit (the demonstrations
+// themselves: compiled/hand_independent.cpp).
 #include <grasp_transfer/program.hpp>
-#include <topograsp/grasp/human_side.hpp>
 
 namespace topograsp::app {
 

@@ -2,13 +2,15 @@
 // The transfer matrix's one step: a source grasp transferred to one target hand by each method,
 // each result judged and kept as a Record. transfer_pair is instantiated for each target hand in
 // a file of its own (sdh.cpp, barrett.cpp, allegro.cpp, leap.cpp, shadow.cpp); main.cpp only
-// declares it. The build compiles the six files as one translation unit (examples/CMakeLists.txt).
+// declares it. The build compiles the six files as one translation unit (apps/CMakeLists.txt), and
+// the hands' transfer steps once for every program (shipped_hands.hpp).
 #pragma once
 
 #include <limits>
 #include <string>
 #include <vector>
 
+#include <grasp_transfer/shipped_hands.hpp>
 #include <topograsp/grasp/transfer/hand.hpp>
 #include <topograsp/model/models/allegro_hand.hpp>
 #include <topograsp/model/models/leap_hand.hpp>

@@ -214,4 +214,14 @@ template <class = void>
   return ferrari_canny_epsilon(w);
 }
 
+#ifdef TOPOGRASP_EXTERN_HAND_INDEPENDENT
+// Compiled once, in the one translation unit that includes grasp/hand_independent.hpp
+// (docs/benchmarks.md, "Compiling the transfer once per program").
+extern template GraspQuality ferrari_canny_epsilon<void>(
+    const Eigen::Matrix<double, 6, Eigen::Dynamic>&);
+extern template GraspQuality ferrari_canny_epsilon<void>(std::span<const ContactForQuality>,
+                                                         const Vec3&, double,
+                                                         const QualityOptions&);
+#endif
+
 }  // namespace topograsp

@@ -155,4 +155,10 @@ template <class = void>
   return out;
 }
 
+#ifdef TOPOGRASP_EXTERN_HAND_INDEPENDENT
+// Compiled once, in the one translation unit that includes grasp/hand_independent.hpp
+// (docs/benchmarks.md, "Compiling the transfer once per program").
+extern template int affine_dimension<void>(const Eigen::Matrix<double, 6, Eigen::Dynamic>&, double);
+#endif
+
 }  // namespace topograsp

@@ -141,4 +141,12 @@ template <class = void>
   return out;
 }
 
+#ifdef TOPOGRASP_EXTERN_HAND_INDEPENDENT
+// Compiled once, in the one translation unit that includes grasp/hand_independent.hpp
+// (docs/benchmarks.md, "Compiling the transfer once per program").
+extern template ArmReach arm_reach<void>(const GraspObject&, const Eigen::Isometry3d&,
+                                         const Eigen::Isometry3d&, const Vec<7>&,
+                                         const ArmReachOptions&);
+#endif
+
 }  // namespace topograsp

@@ -293,9 +293,9 @@ template <class = void>
   return g;
 }
 
-#ifdef TOPOGRASP_EXTERN_HUMAN_DEMONSTRATIONS
-// Compiled once, in the one translation unit that includes grasp/human_side.hpp
-// (docs/benchmarks.md, "The human hand's side, compiled once").
+#ifdef TOPOGRASP_EXTERN_HAND_INDEPENDENT
+// Compiled once, in the one translation unit that includes grasp/hand_independent.hpp
+// (docs/benchmarks.md, "Compiling the transfer once per program").
 extern template HumanGrasp demonstrate<void>(const GraspObject&, const GraspHypothesis&, int,
                                              const GraspSimOptions&);
 #endif

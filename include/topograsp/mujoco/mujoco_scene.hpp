@@ -400,4 +400,11 @@ class MujocoScene {
 
 static_assert(GraspScene<MujocoScene>);
 
+#ifdef TOPOGRASP_EXTERN_HAND_INDEPENDENT
+// Compiled once, in the one translation unit that includes grasp/hand_independent.hpp
+// (docs/benchmarks.md, "Compiling the transfer once per program").
+extern template StabilityResult stability_suite<MujocoScene>(const MujocoScene&,
+                                                             const StabilityOptions&);
+#endif
+
 }  // namespace topograsp
