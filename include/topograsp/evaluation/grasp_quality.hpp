@@ -214,8 +214,9 @@ template <class = void>
   return ferrari_canny_epsilon(w);
 }
 
-#ifdef TOPOGRASP_EXTERN_HAND_INDEPENDENT
-// Compiled once, in the one translation unit that includes grasp/hand_independent.hpp
+#if defined(TOPOGRASP_EXTERN_HAND_INDEPENDENT) && defined(TOPOGRASP_HAVE_QHULL)
+// Compiled once, in the one translation unit that includes grasp/hand_independent.hpp (which
+// compiles them where TOPOGRASP_HAVE_QHULL is defined, as here)
 // (docs/benchmarks.md, "Compiling the transfer once per program").
 extern template GraspQuality ferrari_canny_epsilon<void>(
     const Eigen::Matrix<double, 6, Eigen::Dynamic>&);

@@ -400,8 +400,9 @@ class MujocoScene {
 
 static_assert(GraspScene<MujocoScene>);
 
-#ifdef TOPOGRASP_EXTERN_HAND_INDEPENDENT
-// Compiled once, in the one translation unit that includes grasp/hand_independent.hpp
+#if defined(TOPOGRASP_EXTERN_HAND_INDEPENDENT) && defined(TOPOGRASP_HAVE_MUJOCO)
+// Compiled once, in the one translation unit that includes grasp/hand_independent.hpp (which
+// compiles it where TOPOGRASP_HAVE_MUJOCO is defined, as here)
 // (docs/benchmarks.md, "Compiling the transfer once per program").
 extern template StabilityResult stability_suite<MujocoScene>(const MujocoScene&,
                                                              const StabilityOptions&);
