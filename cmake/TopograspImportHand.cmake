@@ -136,15 +136,19 @@ TOPOGRASP_COMPILE_HAND(${arg_NAME}::model);\n")
     foreach(target IN ITEMS ${unit} ${compiled_unit} ${program})
       target_link_libraries(${target} PRIVATE topograsp_compiled_definitions)
     endforeach()
+    set(common)
   else()
-    target_sources(${program} PRIVATE ${apps}/grasp_transfer/main.cpp
-                                      ${apps}/grasp_transfer/human.cpp
-                                      ${apps}/grasp_transfer/compiled/hand_independent.cpp)
-    foreach(target IN ITEMS ${unit} ${compiled_unit} ${program})
+    # The rest of the program compiled here, an object library too, so that its three units
+    # compile beside the hand's two.
+    set(common ${program}_common)
+    add_library(${common} OBJECT EXCLUDE_FROM_ALL ${apps}/grasp_transfer/main.cpp
+                ${apps}/grasp_transfer/human.cpp ${apps}/grasp_transfer/compiled/hand_independent.cpp)
+    target_sources(${program} PRIVATE $<TARGET_OBJECTS:${common}>)
+    foreach(target IN ITEMS ${unit} ${compiled_unit} ${common} ${program})
       target_compile_definitions(${target} PRIVATE TOPOGRASP_EXTERN_HAND_INDEPENDENT)
     endforeach()
   endif()
-  foreach(target IN ITEMS ${unit} ${compiled_unit} ${program})
+  foreach(target IN ITEMS ${unit} ${compiled_unit} ${common} ${program})
     target_include_directories(${target} PRIVATE ${apps})
     if(TARGET topograsp::topograsp)
       target_link_libraries(${target} PRIVATE topograsp::topograsp)
