@@ -198,9 +198,10 @@ BENCHMARK(BM_stability_suite_human_hammer)->Unit(benchmark::kMillisecond);
 bool assumed_efforts = false;
 
 template <const auto& M>
-MjcfOptions mujoco_options(double max_time_step) {
+MjcfOptions mujoco_options(double max_time_step, bool noslip) {
   MjcfOptions o;
   o.max_time_step = max_time_step;
+  if (!noslip) o.noslip_iterations = 0;
   // A contact and a weld MuJoCo resolves at this step: at least two steps long (MjcfOptions).
   o.contact_timeconst = std::max(o.contact_timeconst, 2.0 * max_time_step);
   o.hand_timeconst = std::max(o.hand_timeconst, 2.0 * max_time_step);
@@ -215,12 +216,14 @@ MjcfOptions mujoco_options(double max_time_step) {
 
 // The same grasp as the built-in benchmark, articulated (joints, torque-limited position
 // servos, couplings) in MuJoCo through MujocoScene: one step() is one scene step of 1/60 s, in
-// MuJoCo steps of at most max_time_step.
+// MuJoCo steps of at most max_time_step; noslip false: without MuJoCo's noslip solver (its own
+// default, soft friction), which the judge runs (MjcfOptions::noslip_iterations).
 template <const auto& M>
-void run_mujoco(benchmark::State& state, const HandScene<M>& built_in, double max_time_step) {
+void run_mujoco(benchmark::State& state, const HandScene<M>& built_in, double max_time_step,
+                bool noslip = true) {
   std::optional<MujocoScene> start;
   try {
-    start.emplace(built_in, mujoco_options<M>(max_time_step));
+    start.emplace(built_in, mujoco_options<M>(max_time_step, noslip));
   } catch (const invalid_argument& e) {
     state.SkipWithError(e.what());
     return;
@@ -251,6 +254,18 @@ void BM_mujoco_human_hammer(benchmark::State& state) {
   run_mujoco(state, scene, 0.002);
 }
 BENCHMARK(BM_mujoco_human_hammer)->Unit(benchmark::kMicrosecond);
+
+void BM_mujoco_soft_friction_sdh_bottle(benchmark::State& state) {
+  static const auto scene = sdh_bottle();
+  run_mujoco(state, scene, 0.002, false);
+}
+BENCHMARK(BM_mujoco_soft_friction_sdh_bottle)->Unit(benchmark::kMicrosecond);
+
+void BM_mujoco_soft_friction_human_hammer(benchmark::State& state) {
+  static const auto scene = human_hammer();
+  run_mujoco(state, scene, 0.002, false);
+}
+BENCHMARK(BM_mujoco_soft_friction_human_hammer)->Unit(benchmark::kMicrosecond);
 
 void BM_mujoco_60hz_sdh_bottle(benchmark::State& state) {
   static const auto scene = sdh_bottle();
@@ -291,6 +306,10 @@ class RatioReporter : public benchmark::ConsoleReporter {
       if (m != seconds_.end())
         std::printf("   MuJoCo (2 ms steps) %8.0f steps/s   ratio %.2fx", batch / m->second,
                     m->second / t->second);
+      const auto soft = seconds_.find(std::string("BM_mujoco_soft_friction_") + scene);
+      if (soft != seconds_.end())
+        std::printf("   MuJoCo without noslip %8.0f steps/s   ratio %.2fx", batch / soft->second,
+                    soft->second / t->second);
       const auto m60 = seconds_.find(std::string("BM_mujoco_60hz_") + scene);
       if (m60 != seconds_.end())
         std::printf("   MuJoCo (1/60 s steps) %8.0f steps/s   ratio %.2fx", batch / m60->second,

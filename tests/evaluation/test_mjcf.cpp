@@ -50,6 +50,7 @@ TEST_CASE("a hand scene exports as articulated MJCF: mocap hand, joints, motors,
   CHECK(xml.find("impratio=\"10\"") != std::string::npos);
   CHECK(xml.find("integrator=\"implicit\"") != std::string::npos);
   CHECK(xml.find("<flag multiccd=\"enable\"/>") != std::string::npos);
+  CHECK(xml.find("noslip_iterations=\"10\"") != std::string::npos);
   CHECK(xml.find("<key name=\"grasp\"") != std::string::npos);
   CHECK(xml.find("nan") == std::string::npos);
   // 8 joints (the knuckle's mirror coupled by one equality), 7 motors of 0.5 N m.
@@ -90,6 +91,7 @@ TEST_CASE("a hand scene exports as articulated MJCF: mocap hand, joints, motors,
   CHECK(m.opt.integrator == mjINT_IMPLICIT);
   CHECK(m.opt.impratio == Approx(10.0));
   CHECK((m.opt.enableflags & mjENBL_MULTICCD) != 0);
+  CHECK(m.opt.noslip_iterations == 10);
   const int object = mj_name2id(&m, mjOBJ_BODY, "object");
   REQUIRE(object >= 0);
   CHECK(m.body_mass[object] == Approx(0.5));
@@ -192,6 +194,8 @@ TEST_CASE("the articulated export writes a model without effort data and refuses
   bad([](MjcfOptions& o) { o.contact_timeconst = 0.001; }, "options.contact_timeconst");
   bad([](MjcfOptions& o) { o.hand_timeconst = 0.003; }, "options.hand_timeconst");
   bad([](MjcfOptions& o) { o.report_distance = -1.0; }, "options.report_distance");
+  bad([](MjcfOptions& o) { o.noslip_iterations = -1; }, "options.noslip_iterations");
+  bad([](MjcfOptions& o) { o.noslip_iterations = 1001; }, "options.noslip_iterations");
   bad([](MjcfOptions& o) { o.effort.assign(3, 1.0); }, "options.effort");
   bad([](MjcfOptions& o) { o.effort = {1, 1, 1, 0, 1, 1, 1}; }, "options.effort[3]");
   test::check_throws_naming([] { (void)mjcf_substeps(0.0, 0.002); }, "time_step");

@@ -6,8 +6,10 @@
 #include "evaluation_test_support.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include <catch2/catch.hpp>
 #include <topograsp/mujoco/mujoco_scene.hpp>
@@ -19,8 +21,10 @@ using namespace topograsp;
 namespace {
 
 // The SDH's side grasp (test::sdh_side_pose) of a 0.3 kg box, 6 x 6 x 10 cm, closed by
-// close_hand; \p open: the hand open and the box 10 cm beyond its fingers, touching nothing.
-HandScene<models::schunk_sdh> sdh_box_scene(bool open = false) {
+// close_hand; \p open: the hand open and the box 10 cm beyond its fingers, touching nothing;
+// \p friction: the hand-object friction coefficient.
+HandScene<models::schunk_sdh> sdh_box_scene(bool open = false,
+                                            double friction = HandSceneOptions{}.friction) {
   const Eigen::Isometry3d hand = test::sdh_side_pose();
   ObjectSpec o;
   o.shapes = {box("", Pose{}, {0.03, 0.03, 0.05})};
@@ -29,7 +33,9 @@ HandScene<models::schunk_sdh> sdh_box_scene(bool open = false) {
   o.mass = 0.3;
   Vec<7> q;
   q << 0.0, -0.6, 0.3, -0.6, 0.3, -0.6, 0.3;
-  HandScene<models::schunk_sdh> scene(hand, q, o);
+  HandSceneOptions so;
+  so.friction = friction;
+  HandScene<models::schunk_sdh> scene(hand, q, o, so);
   if (!open) REQUIRE(close_hand(scene).status == Status::success);
   return scene;
 }
@@ -110,6 +116,55 @@ TEST_CASE("MuJoCo's convex collider gives several points a pair with multi_point
   CHECK(pairs_touching >= 2);
   CHECK(b.hand_contacts(0.001) > pairs_touching);
   CHECK(to_mjcf(scene, one).find("multiccd") == std::string::npos);
+}
+
+TEST_CASE("MuJoCo's noslip solver keeps a grip below its friction limit from creeping",
+          "[evaluation][mujoco]") {
+  // The box held by the SDH's motors at a small fraction of their limits, gravity pulling it
+  // along the fingers, 4 s: MuJoCo's soft friction constraints let it creep through the grip; its
+  // noslip solver (the default, MjcfOptions::noslip_iterations) stops that, as the built-in
+  // stepper's friction sticks below its cone.
+  const auto run = [](double friction, double fraction) {
+    auto held = sdh_box_scene(false, friction);
+    held.set_effort_fraction(fraction);
+    MjcfOptions soft;
+    soft.noslip_iterations = 0;
+    MujocoScene a(held, soft), b(held, MjcfOptions{});
+    auto built_in = held;
+    const Eigen::Isometry3d start = held.object_in_hand();
+    std::array<double, 3> one_s{}, four_s{};  // soft, noslip, built-in
+    for (int i = 1; i <= 240; ++i) {
+      REQUIRE(a.step() == Status::success);
+      REQUIRE(b.step() == Status::success);
+      REQUIRE(built_in.step() == Status::success);
+      if (i != 60 && i != 240) continue;
+      const std::array<double, 3> now{
+          moved(a, start), moved(b, start),
+          (built_in.object_in_hand().translation() - start.translation()).norm()};
+      (i == 60 ? one_s : four_s) = now;
+    }
+    CHECK(b.hand_contacts(0.001) >= 3);
+    return std::pair{one_s, four_s};
+  };
+  SECTION("near the limit MuJoCo without noslip loses the box; with it, it holds as built-in") {
+    const auto [one_s, four_s] = run(0.5, 0.07);  // each: without noslip, with, built-in (m)
+    CAPTURE(one_s, four_s);
+    CHECK(four_s[0] > 0.02);  // the stability suite's limit
+    CHECK(four_s[1] < 0.01);
+    CHECK(four_s[2] < 0.01);
+  }
+  SECTION("further from it the box creeps without noslip and stays put with it") {
+    const auto [one_s, four_s] = run(0.7, 0.05);
+    CAPTURE(one_s, four_s);
+    CHECK(four_s[0] - one_s[0] > 2e-4);
+    CHECK(std::abs(four_s[1] - one_s[1]) < 5e-5);
+    CHECK(std::abs(four_s[2] - one_s[2]) < 5e-5);
+  }
+  MjcfOptions soft;
+  soft.noslip_iterations = 0;
+  CHECK(to_mjcf(sdh_box_scene(), MjcfOptions{}).find("noslip_iterations=\"10\"") !=
+        std::string::npos);
+  CHECK(to_mjcf(sdh_box_scene(), soft).find("noslip_iterations") == std::string::npos);
 }
 
 TEST_CASE("MuJoCo scene gravity moves a free object along it; copies are independent",

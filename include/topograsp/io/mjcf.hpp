@@ -60,6 +60,13 @@ struct MjcfOptions {
   /// (and a real palm) spreads it over the contact patch: MuJoCo let held hammers turn 0.3 to 0.8
   /// rad under gravity that the built-in held within 0.1 (docs/evaluation.md). Default true.
   bool multi_point_contacts = true;
+  /// Iterations of MuJoCo's noslip solver (`noslip_iterations`; 0: off), which after the main
+  /// solver removes the slip that MuJoCo's soft friction constraints let a contact below its
+  /// friction limit make. The built-in stepper's friction sticks below the cone (creeping under 1
+  /// mm/s, docs/stepper.md); without noslip MuJoCo's friction creeps, more the harder the grip, and
+  /// let objects slide and turn out of grips the built-in held within millimetres
+  /// (docs/evaluation.md). Default 10, in [0, 1000].
+  int noslip_iterations = 10;
   /// Overrides the effort limit of each configuration entry (N m or N, dim nq, each > 0); empty:
   /// the model's LinkSpec::effort.
   std::vector<double> effort;
@@ -98,6 +105,9 @@ inline void require_mjcf_options(const MjcfOptions& o, int nq) {
   require_positive(o.impratio, "options.impratio");
   require_non_negative(o.default_armature, "options.default_armature");
   require_non_negative(o.report_distance, "options.report_distance");
+  if (o.noslip_iterations < 0 || o.noslip_iterations > 1000)
+    throw_invalid_argument("options.noslip_iterations",
+                           "expected 0 to 1000, got " + std::to_string(o.noslip_iterations));
   const auto require_timeconst = [&](double t, const char* name) {
     if (!(t >= 2.0 * o.max_time_step && t < 1e3))
       throw_invalid_argument(name,
@@ -133,7 +143,7 @@ inline void require_mjcf_options(const MjcfOptions& o, int nq) {
 /// object (the scene contract of docs/evaluation.md):
 /// - `<option>`: the scene's time step split into mjcf_substeps(time_step, max_time_step) equal
 ///   steps, the scene's gravity, `cone="elliptic"`, options.impratio, `integrator="implicit"`,
-///   the multiccd flag (options.multi_point_contacts);
+///   the multiccd flag (options.multi_point_contacts), options.noslip_iterations when positive;
 /// - a mocap body named `hand` at the hand frame (the target the scene moves) and the hand's
 ///   base, a body named `hand_base` with a free joint (the model's root link: its shapes and
 ///   mass), held to `hand` by a weld equality (solref options.hand_timeconst, damping ratio 1).
@@ -168,7 +178,8 @@ inline void require_mjcf_options(const MjcfOptions& o, int nq) {
 ///   object's pose), ctrl (the targets, clamped to the limits), mpos and mquat (the hand pose).
 /// Geoms are named `hand_<collider>` (the World's collider index) and `object_<k>`.
 /// \throws topograsp::invalid_argument naming the option for a bad option (non-positive
-/// max_time_step or impratio; negative default_armature or report_distance; a contact_timeconst
+/// max_time_step or impratio; negative default_armature or report_distance; noslip_iterations
+/// outside [0, 1000]; a contact_timeconst
 /// or hand_timeconst under 2 * max_time_step; options.effort of the wrong size or with an entry
 /// that is not positive).
 template <const auto& M, class S>
@@ -191,6 +202,8 @@ void write_mjcf(std::ostream& os, const HandScene<M, S>& scene, const MjcfOption
   os << "  <option timestep=\"" << so.time_step / substeps << '"';
   detail::write_mjcf_vec3(os, "gravity", world.gravity().template cast<double>());
   os << " cone=\"elliptic\" impratio=\"" << options.impratio << "\" integrator=\"implicit\"";
+  if (options.noslip_iterations > 0)
+    os << " noslip_iterations=\"" << options.noslip_iterations << '"';
   os << (options.multi_point_contacts ? ">\n    <flag multiccd=\"enable\"/>\n  </option>\n"
                                       : "/>\n");
   os << "  <size nkey=\"1\"/>\n";
