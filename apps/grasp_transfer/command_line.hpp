@@ -25,8 +25,10 @@ namespace topograsp {
 
 /// What the command line of grasp_transfer asks for.
 struct CommandLine {
-  /// The experiment: objects and methods are filled (default hammer, bottle and all three
-  /// methods, in the order given), every other field as parsed or its default.
+  /// The experiment: objects and methods are filled (default hammer, bottle and the five
+  /// methods of Table I, in the order given); the hypotheses default to the demonstrator's and
+  /// the closing to the balanced hold (--hypotheses, --closing); every other field as parsed or
+  /// its default.
   ExperimentOptions experiment;
   /// --hand: the robot hand the demonstrations are transferred to, one of the program's hands
   /// (default its first: the SDH for grasp_transfer, docs/transfer.md "Any hand")
@@ -157,6 +159,19 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
   return names;
 }
 
+// The closing protocol of --closing (free, held or balanced; docs/evaluation.md) in sim. free:
+// the object free while the hands close, the human hand approaching until any link touches (the
+// paper's). held: every hand closes on the object held still, the object released for 0.25 s
+// (gravity off) before the tests, and the human hand approaches palm first. balanced: the same,
+// each hand holding with torques whose contact forces balance on the object.
+inline void set_closing(GraspSimOptions& sim, std::string_view protocol) {
+  const bool held = protocol != "free";
+  sim.close.hold_object = held;
+  sim.close.release_steps = held ? 15 : 0;
+  sim.close.proximal_first = held;
+  sim.close.balanced_hold = protocol == "balanced";
+  sim.palm_first = held;
+}
 }  // namespace detail
 
 /// Parses the arguments of grasp_transfer (\p args without the program name; the options are
@@ -185,6 +200,12 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
                     : std::vector<std::string>(hands.begin(), hands.end());
   cli.hand = hand_names.front();
   cli.experiment.judge = mujoco_linked ? Judge::both : Judge::builtin;
+  // The program's protocol (issue 28; docs/evaluation.md, "The balanced hold"): the demonstrator's
+  // hypotheses, every hand closing on the held object and holding with balanced torques. The
+  // paper's is --hypotheses box --closing free (ExperimentOptions' and GraspSimOptions' own
+  // defaults, which library callers get).
+  cli.experiment.hypotheses = HypothesisRule::demonstrator;
+  detail::set_closing(cli.experiment.transfer.sim, "balanced");
   if (!args.empty() && args.front() == "merge") {
     cli.merge = true;
     bool out_seen = false;
@@ -365,17 +386,7 @@ inline std::vector<std::string_view> split_cli_list(std::string_view list, std::
       if (value != "free" && value != "held" && value != "balanced")
         detail::throw_invalid_argument(
             arg, "expected free, held or balanced, got " + detail::quote_argument(value));
-      // held: every hand closes on the object held still, the object released for 0.25 s
-      // (gravity off) before the tests, and the human hand approaches palm first; balanced: the
-      // same, each hand holding with torques whose contact forces balance on the object
-      // (docs/evaluation.md).
-      const bool held = value != "free";
-      GraspSimOptions& sim = cli.experiment.transfer.sim;
-      sim.close.hold_object = held;
-      sim.close.release_steps = held ? 15 : 0;
-      sim.close.proximal_first = held;
-      sim.close.balanced_hold = value == "balanced";
-      sim.palm_first = held;
+      detail::set_closing(cli.experiment.transfer.sim, value);
     } else if (arg == "--winding-reference") {
       cli.experiment.transfer.winding_reference =
           enum_from_name(value, {WindingReference::centre_of_mass, WindingReference::nearest_point},
@@ -493,14 +504,16 @@ options:
   --resume         skip the hypotheses that an interrupted run into DIR with the same options
                    finished (its journal), keeping their results and scenes
   --max-hypotheses M  only the first M hypotheses of each object (default 0: all)
-  --hypotheses R   the grasp hypotheses of the planned demonstrations: box (default, BADGr's 4
-                   rolls per reachable box face) or demonstrator (8 rolls per face, each also
-                   jittered once in position, tilt and roll by a seeded rule; docs/evaluation.md)
-  --closing C      free (default: the object is free while the hands close, and the human hand
-                   approaches until any link touches), held (every hand closes on the object
-                   held still, which is then released for 0.25 s before the tests; the human
-                   hand approaches palm first) or balanced (held, and every hand holds with
-                   torques whose contact forces balance on the object)
+  --hypotheses R   the grasp hypotheses of the planned demonstrations: demonstrator (default:
+                   8 rolls per box face, each also jittered once in position, tilt and roll by a
+                   seeded rule; docs/evaluation.md) or box (the paper's: BADGr's 4 rolls per
+                   reachable box face)
+  --closing C      balanced (default: every hand closes on the object held still, which is
+                   then released for 0.25 s before the tests, and holds with torques whose
+                   contact forces balance on the object; the human hand approaches palm first),
+                   held (the same, every closing joint holding with its whole holding torque) or
+                   free (the paper's: the object is free while the hands close, and the human
+                   hand approaches until any link touches)
   --setting S      hand (default: every hand placed and judged without the arm; the topological
                    plan runs on the arm with the object turned to meet it) or arm (the paper's
                    setting: each object fixed in front of the arm, the arm moved from its ready

@@ -116,12 +116,13 @@ TEST_CASE("the flag --every-test runs the whole stability suite on every grasp",
 
 TEST_CASE("the options --hypotheses and --closing choose the demonstrations' rule and closing",
           "[io][command_line]") {
+  // The default: the demonstrator's hypotheses, closed on the held object, balanced.
   const CommandLine d = parse({});
-  CHECK(d.experiment.hypotheses == HypothesisRule::box);
-  CHECK_FALSE(d.experiment.transfer.sim.close.hold_object);
-  CHECK_FALSE(d.experiment.transfer.sim.palm_first);
-  CHECK(parse({"--hypotheses", "demonstrator"}).experiment.hypotheses ==
-        HypothesisRule::demonstrator);
+  CHECK(d.experiment.hypotheses == HypothesisRule::demonstrator);
+  CHECK(d.experiment.transfer.sim.close.hold_object);
+  CHECK(d.experiment.transfer.sim.close.balanced_hold);
+  CHECK(d.experiment.transfer.sim.palm_first);
+  CHECK(parse({"--hypotheses", "box"}).experiment.hypotheses == HypothesisRule::box);
   // held and balanced share the protocol; balanced also holds with balanced torques.
   for (const char* closing : {"held", "balanced"}) {
     INFO(closing);
@@ -133,8 +134,13 @@ TEST_CASE("the options --hypotheses and --closing choose the demonstrations' rul
     CHECK(sim.close.proximal_first);
     CHECK(sim.close.balanced_hold == (std::string_view(closing) == "balanced"));
   }
-  CHECK_FALSE(d.experiment.transfer.sim.close.balanced_hold);
-  CHECK_FALSE(parse({"--closing", "free"}).experiment.transfer.sim.close.hold_object);
+  // free: the paper's protocol, nothing of the held closing left over from the default.
+  const GraspSimOptions free = parse({"--closing", "free"}).experiment.transfer.sim;
+  CHECK_FALSE(free.close.hold_object);
+  CHECK(free.close.release_steps == 0);
+  CHECK_FALSE(free.close.proximal_first);
+  CHECK_FALSE(free.close.balanced_hold);
+  CHECK_FALSE(free.palm_first);
   CHECK_THAT(error_of({"--closing", "fixed"}),
              Catch::StartsWith("--closing: expected free, held or balanced"));
   CHECK_THAT(error_of({"--hypotheses", "many"}), Catch::StartsWith("--hypotheses: "));
