@@ -143,14 +143,16 @@ if(NOT TOPOGRASP_SANITIZE)
                    -DSTATUS=2 -DCOPY_TO=${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_alone
                    -P ${PROJECT_SOURCE_DIR}/cmake/expect_failure.cmake)
 endif()
-# The transfer matrix (docs/results.md): a small run, one stable bottle demonstration to every
-# hand by the fingertip and virtual-finger baselines; bad arguments refused.
+# The transfer matrix (docs/results.md): a small run on grasp_transfer's demonstrations, the six
+# stable ones of the first 25 bottle hypotheses (seed 1), copies of four grasps, to every hand by
+# the fingertip and virtual-finger baselines, each cell counted raw and on the four distinct
+# grasps, each method paired with the first on the same grasps; bad arguments refused.
 add_test(NAME "app: transfer_matrix (small run)"
-         COMMAND transfer_matrix --objects bottle --max-hypotheses 6
+         COMMAND transfer_matrix --objects bottle --max-hypotheses 25
                  --methods fingertip,virtual_finger --quiet
                  --out ${CMAKE_CURRENT_BINARY_DIR}/transfer_matrix_small)
 set_tests_properties("app: transfer_matrix (small run)" PROPERTIES
-                     PASS_REGULAR_EXPRESSION "human -> Shadow \\| bottle \\| virtual_finger \\| 1 \\|")
+                     PASS_REGULAR_EXPRESSION "human -> Shadow \\| bottle \\| virtual_finger \\| 6 \\| 6 \\|[^\n]*\\| [0-4]/4 / [0-4]/4 \\|.*\nAgainst fingertip.*\n\\| human -> Shadow \\| virtual_finger \\| [0-9]+ : [0-9]+, p = [^|]*\\| [0-9]+ : [0-9]+, p = [^|]*\\| [0-9]+ : [0-9]+, p = [^|]*\\| [0-9]+ : [0-9]+, p = [^|]*\\|")
 # Past a file-size limit the same run fails with a message and leaves that run's files as they
 # were (its outputs are staged and committed as one).
 add_test(NAME "app: transfer_matrix fails whole past a file-size limit"
@@ -168,6 +170,8 @@ expect_rejected(transfer_matrix end_to_end "unknown object|--objects anvil|--obj
                 "a missing value|--out|--out: expected a value"
                 "bad jobs|--jobs 0|--jobs: expected 1 to 1024"
                 "negative hypotheses|--max-hypotheses -1|--max-hypotheses: expected >= 0"
+                "unknown hypothesis rule|--hypotheses grid|--hypotheses: unknown rule \"grid\""
+                "unknown closing|--closing loose|--closing: expected free, held or balanced, got \"loose\""
                 "unknown option|--hand allegro|unknown option \"--hand\""
                 "unwritable out|--out /proc/transfer_matrix|--out: cannot create the folder")
 # record_demonstrations is not built by the sanitizer build either.

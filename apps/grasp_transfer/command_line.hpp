@@ -172,6 +172,20 @@ inline void set_closing(GraspSimOptions& sim, std::string_view protocol) {
   sim.close.balanced_hold = protocol == "balanced";
   sim.palm_first = held;
 }
+
+// --closing's value checked (free, held or balanced) and set in sim; \p option names it in the
+// message.
+inline void parse_closing(std::string_view value, std::string_view option, GraspSimOptions& sim) {
+  if (value != "free" && value != "held" && value != "balanced")
+    throw_invalid_argument(option, "expected free, held or balanced, got " + quote_argument(value));
+  set_closing(sim, value);
+}
+
+// --hypotheses' value: demonstrator or box.
+[[nodiscard]] inline HypothesisRule parse_hypothesis_rule(std::string_view value,
+                                                          std::string_view option) {
+  return enum_from_name(value, {HypothesisRule::box, HypothesisRule::demonstrator}, option, "rule");
+}
 }  // namespace detail
 
 /// Parses the arguments of grasp_transfer (\p args without the program name; the options are
@@ -375,18 +389,14 @@ inline void set_closing(GraspSimOptions& sim, std::string_view protocol) {
                      detail::quote_argument(value));
       cli.experiment.transfer.sim.close.hold_fraction = f;
     } else if (arg == "--hypotheses") {
-      cli.experiment.hypotheses =
-          enum_from_name(value, {HypothesisRule::box, HypothesisRule::demonstrator}, arg, "rule");
+      cli.experiment.hypotheses = detail::parse_hypothesis_rule(value, arg);
     } else if (arg == "--setting") {
       if (value != "hand" && value != "arm")
         detail::throw_invalid_argument(
             arg, "expected hand or arm, got " + detail::quote_argument(value));
       cli.experiment.arm_setting = value == "arm";
     } else if (arg == "--closing") {
-      if (value != "free" && value != "held" && value != "balanced")
-        detail::throw_invalid_argument(
-            arg, "expected free, held or balanced, got " + detail::quote_argument(value));
-      detail::set_closing(cli.experiment.transfer.sim, value);
+      detail::parse_closing(value, arg, cli.experiment.transfer.sim);
     } else if (arg == "--winding-reference") {
       cli.experiment.transfer.winding_reference =
           enum_from_name(value, {WindingReference::centre_of_mass, WindingReference::nearest_point},

@@ -2,8 +2,8 @@
 # cmake -DPROGRAM=transfer_matrix -DSOURCE=<a finished run's folder> -DDIR=<scratch folder>
 #       -P file_limit.cmake
 # A copy of a finished run's folder, then the same run into it under a file-size limit (2 KB:
-# between the sizes of matrix.md and index.html) that makes a write fail part way, as a full disk
-# would: the run must fail with a message naming the write, and leave the previous run's files
+# less than the results page, the first file written) that makes a write fail part way, as a full
+# disk would: the run must fail with a message naming the write, and leave the previous run's files
 # byte-identical (docs/testing.md, "What is refused (reliability, round two)").
 file(REMOVE_RECURSE "${DIR}")
 file(MAKE_DIRECTORY "${DIR}")
