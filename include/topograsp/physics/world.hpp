@@ -369,7 +369,8 @@ class World {
   /// Advances the world by one time step (see the class comment). Allocates nothing. Returns
   /// Status::success, or Status::numerical_issue when the state became non-finite, too fast or too
   /// far (beyond max_length()); then
-  /// the step is undone (every number stays finite) and later calls do nothing and return it again.
+  /// the step is undone (the bodies and actuators as before it, its contacts discarded: every
+  /// manifold empty, so every number stays finite) and later calls do nothing and return it again.
   Status step() noexcept {
     if (status_ != Status::success) return status_;
     const detail::StepContext<S> ctx =
@@ -405,6 +406,8 @@ class World {
     if (!detail::state_ok<S>(bodies_, actuators_, static_cast<S>(options_.max_speed),
                              max_length())) {
       detail::restore_state<S>(bodies_, actuators_, saved_, saved_actuators_, colliders_);
+      // The undone step's contacts are discarded: their impulses may be what went non-finite.
+      for (Manifold<S>& m : manifolds_) m.count = 0;
       status_ = Status::numerical_issue;
       return status_;
     }
