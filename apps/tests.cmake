@@ -56,6 +56,7 @@ expect_rejected(grasp_transfer "" "unknown object|--objects anvil|--objects: unk
                       "parameter set twice|--set backoff=0.1 --set backoff=0.2|--set: backoff is set twice"
                       "parameter without value|--set final_approach|--set: expected NAME=VALUE"
                       "unknown winding reference|--winding-reference palm|--winding-reference: unknown reference"
+                      "a human grip above ten|--human-grip 11|--human-grip: expected a multiple of the human hand's holding torques"
                       "resume with figures|--resume --figures|--figures: draws the grasps of this run only"
                       "merge without shards|merge --out x|merge: expected the shards' output folders"
                       "merge with a run option|merge --jobs 2 x|--jobs: not an option of merge"
@@ -172,6 +173,7 @@ expect_rejected(transfer_matrix end_to_end "unknown object|--objects anvil|--obj
                 "negative hypotheses|--max-hypotheses -1|--max-hypotheses: expected >= 0"
                 "unknown hypothesis rule|--hypotheses grid|--hypotheses: unknown rule \"grid\""
                 "unknown closing|--closing loose|--closing: expected free, held or balanced, got \"loose\""
+                "a grip below the holding torques|--human-grip 0.5|--human-grip: expected a multiple of the human hand's holding torques in \\[1, 10\\]"
                 "unknown option|--hand allegro|unknown option \"--hand\""
                 "unwritable out|--out /proc/transfer_matrix|--out: cannot create the folder")
 # record_demonstrations is not built by the sanitizer build either.

@@ -173,6 +173,18 @@ inline void set_closing(GraspSimOptions& sim, std::string_view protocol) {
   sim.palm_first = held;
 }
 
+// --human-grip's value: the human hand's strongest grip, a multiple of its holding torques in
+// [1, k_max_grip]; \p option names it in the error.
+inline double parse_human_grip(std::string_view value, std::string_view option) {
+  const double g = parse_cli_number<double>(value, option);
+  if (!(g >= 1.0 && g <= k_max_grip))
+    throw_invalid_argument(option,
+                           "expected a multiple of the human hand's holding torques in [1, 10], "
+                           "got " +
+                               quote_argument(value));
+  return g;
+}
+
 // --closing's value checked (free, held or balanced) and set in sim; \p option names it in the
 // message.
 inline void parse_closing(std::string_view value, std::string_view option, GraspSimOptions& sim) {
@@ -291,24 +303,12 @@ inline void parse_closing(std::string_view value, std::string_view option, Grasp
       cli.experiment.transfer.sim.stability.every_test = true;
       continue;
     }
-    constexpr std::string_view value_options[] = {"--objects",
-                                                  "--methods",
-                                                  "--out",
-                                                  "--jobs",
-                                                  "--seed",
-                                                  "--max-hypotheses",
-                                                  "--shard",
-                                                  "--winding-reference",
-                                                  "--set",
-                                                  "--friction",
-                                                  "--hold-fraction",
-                                                  "--judge",
-                                                  "--demonstrations",
-                                                  "--hypotheses",
-                                                  "--closing",
-                                                  "--setting",
-                                                  "--hand",
-                                                  "--hands"};
+    constexpr std::string_view value_options[] = {
+        "--objects", "--methods",        "--out",           "--jobs",
+        "--seed",    "--max-hypotheses", "--shard",         "--winding-reference",
+        "--set",     "--friction",       "--hold-fraction", "--human-grip",
+        "--judge",   "--demonstrations", "--hypotheses",    "--closing",
+        "--setting", "--hand",           "--hands"};
     bool known = false;
     for (const std::string_view o : value_options) known = known || o == arg;
     if (!known)
@@ -388,6 +388,8 @@ inline void parse_closing(std::string_view value, std::string_view option, Grasp
             arg, "expected a fraction of the motors' torque limits in (0, 1], got " +
                      detail::quote_argument(value));
       cli.experiment.transfer.sim.close.hold_fraction = f;
+    } else if (arg == "--human-grip") {
+      cli.experiment.transfer.sim.human_max_grip = detail::parse_human_grip(value, arg);
     } else if (arg == "--hypotheses") {
       cli.experiment.hypotheses = detail::parse_hypothesis_rule(value, arg);
     } else if (arg == "--setting") {
@@ -538,6 +540,10 @@ options:
   --hold-fraction F  the fraction of its motors' torque limits with which the robot hand
                    closes and holds, in (0, 1] (default 0.5); the human hand holds with its
                    holding torques
+  --human-grip G   how much harder than its holding torques the human hand may grip where the
+                   object's load asks for it under --closing balanced, in [1, 10] (default 5:
+                   its holding torques are about a fifth of its strength; 1: the holding
+                   torques alone, as before 2026-12-06; docs/evaluation.md)
   --judge J        which simulator judges the grasps: builtin, mujoco or both (default both
                    when built with MuJoCo, else builtin; mujoco and both need MuJoCo)
   --every-test     run every test of the stability suite on every grasp (default: a grasp's

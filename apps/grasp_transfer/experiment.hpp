@@ -289,7 +289,9 @@ HandTransfer<M> experiment_transfer(TransferMethod method, const GraspObject& ob
 /// (their scenes would overwrite each other), a method hand M does not run (experiment_method), the
 /// arm setting for a hand other than the SDH, an invalid object, or a transfer parameter outside
 /// its range (validate_transfer_parameters), a negative or non-finite transfer.sim.friction, a
-/// hold fraction outside (0, 1] (transfer.sim.close.hold_fraction, human_hold_fraction),
+/// hold fraction outside (0, 1] (transfer.sim.close.hold_fraction, human_hold_fraction), a
+/// human_max_grip outside [1, k_max_grip], a closing option outside its range (close_parameters,
+/// named "transfer.sim.close.<option>"),
 /// bad stability options (validate_stability_options, named "transfer.sim.stability.<option>"),
 /// or a skipped hypothesis of an object that is not in the run.
 template <const auto& M = models::schunk_sdh>
@@ -354,6 +356,10 @@ void validate_experiment_options(const ExperimentOptions& options,
        {std::pair{options.transfer.sim.close.hold_fraction, "transfer.sim.close.hold_fraction"},
         std::pair{options.transfer.sim.human_hold_fraction, "transfer.sim.human_hold_fraction"}})
     if (!(f > 0.0 && f <= 1.0)) detail::throw_invalid_argument(name, "expected a value in (0, 1]");
+  const double grip = options.transfer.sim.human_max_grip;
+  if (!(grip >= 1.0 && grip <= k_max_grip))
+    detail::throw_invalid_argument("transfer.sim.human_max_grip", "expected a value in [1, 10]");
+  validate_parameters(options.transfer.sim.close, close_parameters, "transfer.sim.close.");
   validate_stability_options(options.transfer.sim.stability, "transfer.sim.stability");
   for (const std::pair<std::string, int>& s : options.skip)
     if (std::none_of(options.objects.begin(), options.objects.end(),

@@ -231,6 +231,9 @@ inline Json json_closing(const ClosingRecord* c) {
             c->hold_torque.data(), static_cast<Eigen::Index>(c->hold_torque.size()))));
   j.set("balanced_hold", c->balanced);
   j.set("hold_imbalance", c->hold_imbalance);
+  j.set("hold_squeeze", c->hold_squeeze);
+  j.set("load_squeeze", c->load_squeeze);
+  j.set("grip", c->grip);
   return j;
 }
 
@@ -345,6 +348,7 @@ inline void check_scene_names(const ExperimentOptions& options) {
   cfg.set("hand_stiffness", options.transfer.sim.scene.stepper.kinematic_stiffness);
   cfg.set("hold_fraction", options.transfer.sim.close.hold_fraction);
   cfg.set("human_hold_fraction", options.transfer.sim.human_hold_fraction);
+  cfg.set("human_max_grip", options.transfer.sim.human_max_grip);
   cfg.set("judge", std::string(to_string(options.judge)));
   cfg.set("closing_steps", options.transfer.sim.close.closing_steps);
   cfg.set("hypotheses", std::string(to_string(options.hypotheses)));

@@ -223,6 +223,17 @@ TEST_CASE("the resume flag, and merge with the shards' folders", "[io][command_l
   CHECK_THAT(error_of({"--quiet", "merge"}), Catch::Contains("unknown option \"merge\""));
 }
 
+TEST_CASE("the option --human-grip sets the human hand's strongest grip", "[io][command_line]") {
+  CHECK(parse({}).experiment.transfer.sim.human_max_grip == 5.0);
+  CHECK(parse({"--human-grip", "1"}).experiment.transfer.sim.human_max_grip == 1.0);
+  CHECK(parse({"--human-grip", "2.5"}).experiment.transfer.sim.human_max_grip == 2.5);
+  for (const char* g : {"0.5", "0", "-1", "11", "nan", "inf", "x"}) {
+    INFO(g);
+    CHECK_THAT(error_of({"--human-grip", g}), Catch::StartsWith("--human-grip: "));
+  }
+  CHECK_THAT(error_of({"--human-grip", "0.5"}), Catch::Contains("in [1, 10]"));
+}
+
 TEST_CASE("an option's value is never empty nor another option", "[io][command_line][bad-input]") {
   CHECK_THAT(error_of({"--out", ""}), Catch::StartsWith("--out: expected a value"));
   CHECK_THAT(error_of({"--out", "--jobs", "2"}),
@@ -230,7 +241,8 @@ TEST_CASE("an option's value is never empty nor another option", "[io][command_l
   CHECK_THAT(error_of({"--out"}), Catch::StartsWith("--out: expected a value"));
   for (const std::string_view option :
        {"--objects", "--methods", "--out", "--jobs", "--seed", "--shard", "--max-hypotheses",
-        "--winding-reference", "--set", "--friction", "--hold-fraction", "--judge"}) {
+        "--winding-reference", "--set", "--friction", "--hold-fraction", "--human-grip",
+        "--judge"}) {
     INFO(option);
     CHECK_THAT(error_of({option, ""}),
                Catch::StartsWith(std::string(option) + ": expected a value"));
@@ -368,9 +380,10 @@ TEST_CASE("the usage lists every option and every parameter with its range", "[i
                              "--force",      "--jobs",           "--seed",
                              "--shard",      "--max-hypotheses", "--winding-reference",
                              "--set",        "--friction",       "--hold-fraction",
-                             "--judge",      "--figures",        "--quiet",
-                             "--help",       "--resume",         "merge",
-                             "--every-test", "exit status",      "results.json"}) {
+                             "--human-grip", "--judge",          "--figures",
+                             "--quiet",      "--help",           "--resume",
+                             "merge",        "--every-test",     "exit status",
+                             "results.json"}) {
     INFO(option);
     CHECK(usage.find(option) != std::string::npos);
   }

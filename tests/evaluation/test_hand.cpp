@@ -65,6 +65,16 @@ HandScene<models::human_hand> human_cylinder_scene(const Eigen::Vector3d& centre
       hand, q, cylinder_object(hand, centre, Eigen::Vector3d::UnitY(), 0.02, 0.08, 0.3));
 }
 
+// The SDH closed on the bottle held still (uniform hold, then released): its three fingers'
+// contact forces can balance.
+HandScene<models::schunk_sdh> closed_sdh_bottle() {
+  auto scene = test::sdh_bottle_scene();
+  CloseOptions o;
+  o.hold_object = true;
+  REQUIRE(close_hand(scene, o).status == Status::success);
+  return scene;
+}
+
 }  // namespace
 
 TEST_CASE("closing each shipped hand on a cylinder stops every finger at contact",
@@ -181,12 +191,8 @@ TEST_CASE("a balanced hold keeps the released object where the fingers closed on
 
 TEST_CASE("balance_hold: forces that balance on the object, scaled to the hold fraction",
           "[evaluation][close]") {
-  // The SDH closed on a bottle (uniform hold, object free): its three fingers' contact forces
-  // can balance; balance_hold() finds torques whose forces do, at the asked fraction.
-  auto scene = test::sdh_bottle_scene();
-  CloseOptions o;
-  o.hold_object = true;
-  REQUIRE(close_hand(scene, o).status == Status::success);
+  // balance_hold() finds torques whose forces balance, at the asked fraction.
+  auto scene = closed_sdh_bottle();
   REQUIRE(scene.hand_contacts() >= 3);
   for (const double fraction : {0.25, 1.0}) {
     const HoldBalance<7> b = balance_hold(scene, fraction);
@@ -208,6 +214,153 @@ TEST_CASE("balance_hold: forces that balance on the object, scaled to the hold f
   // A hand that touches nothing has nothing to balance.
   auto apart = test::sdh_bottle_scene();
   CHECK_FALSE(balance_hold(apart, 0.5).found);
+}
+
+TEST_CASE("load_squeeze: the squeeze a weight asks of two opposed contacts is weight / mu",
+          "[evaluation][close]") {
+  // Two contacts on either side of the centre of mass along x, friction mu, each a cone of 8
+  // edges as balance_hold() builds it: a weight along y or z is held by friction alone, so the
+  // two normal forces sum to weight / mu; along x one contact carries it, weight. The largest is
+  // weight / mu.
+  for (const double mu : {0.5, 1.0}) {
+    Eigen::MatrixXd wrench(6, 2 * k_hold_cone_edges);
+    const double r = 0.02, length = r;
+    for (int i = 0; i < 2; ++i) {
+      const Vec3 n = i == 0 ? Vec3::UnitX() : Vec3(-Vec3::UnitX());
+      const Vec3 p = -r * n, t1 = n.unitOrthogonal(), t2 = n.cross(t1);
+      for (int e = 0; e < k_hold_cone_edges; ++e) {
+        const double a = 2.0 * std::numbers::pi * e / k_hold_cone_edges;
+        const Vec3 f = n + mu * (std::cos(a) * t1 + std::sin(a) * t2);
+        wrench.block<3, 1>(0, i * k_hold_cone_edges + e) = f;
+        wrench.block<3, 1>(3, i * k_hold_cone_edges + e) = p.cross(f) / length;
+      }
+    }
+    INFO("mu " << mu);
+    CHECK(detail::load_squeeze(wrench, Mat3::Identity(), 3.0) == Approx(3.0 / mu).epsilon(1e-3));
+    // The frame turned about x: the weight now pulls between two edges of each cone (the cone
+    // of 8 edges reaches mu cos(22.5 degrees) there, not mu), so it asks a little more.
+    const Mat3 turned = Eigen::AngleAxisd(0.3, Vec3::UnitX()).toRotationMatrix();
+    const double between = detail::load_squeeze(wrench, turned, 3.0);
+    CHECK(between > 3.0 / mu * 1.001);
+    CHECK(between <= 3.0 / (mu * std::cos(std::numbers::pi / 8.0)) * 1.001);
+  }
+  // One contact cannot hold a weight pulling it off: only the direction into it counts.
+  Eigen::MatrixXd one(6, 1);
+  one << 1, 0, 0, 0, 0, 0;
+  CHECK(detail::load_squeeze(one, Mat3::Identity(), 2.0) == Approx(2.0));
+}
+
+TEST_CASE("a grip that follows the load: harder where the weight asks, up to max_grip",
+          "[evaluation][close]") {
+  auto scene = closed_sdh_bottle();
+  const double fraction = 0.25;
+  const HoldBalance<7> fixed = balance_hold(scene, fraction);
+  REQUIRE(fixed.found);
+  CHECK(fixed.grip == 1.0);
+  CHECK(fixed.load_squeeze == 0.0);
+  // max_grip 1 or no weight: the fixed grip, whatever the weight.
+  for (const GripLoad g : {GripLoad{50.0, 0.4, 1.0}, GripLoad{0.0, 0.4, 5.0}}) {
+    const HoldBalance<7> b = balance_hold(scene, fraction, g);
+    CHECK(b.grip == 1.0);
+    CHECK(b.torque.isApprox(fixed.torque));
+  }
+  // The squeeze a weight asks grows with it; the grip follows it from the fixed grip up to
+  // max_grip, the torques scaled with it.
+  const double light = balance_hold(scene, fraction, {1.0, 0.4, 5.0}).load_squeeze;
+  REQUIRE(light > 0.0);
+  for (const double weight : {1.0, 10.0, 40.0, 1000.0}) {
+    const HoldBalance<7> b = balance_hold(scene, fraction, {weight, 0.4, 5.0});
+    INFO("weight " << weight << " N: load squeeze " << b.load_squeeze << ", grip " << b.grip);
+    CHECK(b.load_squeeze == Approx(weight * light).epsilon(1e-6));
+    const double expected = std::clamp(1.4 * b.load_squeeze / fixed.squeeze, 1.0, 5.0);
+    CHECK(b.grip == Approx(expected));
+    CHECK(b.torque.isApprox(b.grip * fixed.torque));
+    CHECK(b.squeeze == Approx(b.grip * fixed.squeeze));
+  }
+  CHECK(balance_hold(scene, fraction, {1000.0, 0.4, 5.0}).grip == 5.0);
+  CHECK(balance_hold(scene, fraction, {1000.0, 0.4, 2.0}).grip == 2.0);
+  CHECK_THROWS_WITH(balance_hold(scene, fraction, {-1.0, 0.4, 5.0}),
+                    Catch::StartsWith("grip.weight: "));
+  CHECK_THROWS_WITH(balance_hold(scene, fraction, {std::nan(""), 0.4, 5.0}),
+                    Catch::StartsWith("grip.weight: "));
+  CHECK_THROWS_WITH(balance_hold(scene, fraction, {1.0, -0.1, 5.0}),
+                    Catch::StartsWith("grip.margin: "));
+  CHECK_THROWS_WITH(balance_hold(scene, fraction, {1.0, 0.4, 0.5}),
+                    Catch::StartsWith("grip.max_grip: "));
+  CHECK_THROWS_WITH(balance_hold(scene, fraction, {1.0, 0.4, 11.0}),
+                    Catch::StartsWith("grip.max_grip: "));
+}
+
+TEST_CASE("closing with a grip that follows the load: stronger, stiffer servos, recorded",
+          "[evaluation][close]") {
+  // The SDH on the 0.5 kg bottle, held at a twentieth of its limits: the bottle's weight asks
+  // for more than that grip, and close_hand() grips up to max_grip times harder, its servos
+  // given the torque and as much stiffer.
+  const auto close = [](double max_grip) {
+    auto scene = test::sdh_bottle_scene();
+    CloseOptions o;
+    o.hold_object = true;
+    o.release_steps = 15;
+    o.balanced_hold = true;
+    o.hold_fraction = 0.05;
+    o.max_grip = max_grip;
+    const auto r = close_hand(scene, o);
+    REQUIRE(r.status == Status::success);
+    return std::pair{r, scene.effort_fraction()};
+  };
+  const auto [fixed, fixed_fraction] = close(1.0);
+  REQUIRE(fixed.balanced);
+  CHECK(fixed.grip == 1.0);
+  CHECK(fixed.load_squeeze == 0.0);
+  CHECK(fixed.hold_squeeze > 0.0);
+  CHECK(fixed_fraction == 1.0);
+  const auto [strong, strong_fraction] = close(8.0);
+  REQUIRE(strong.balanced);
+  INFO("load squeeze " << strong.load_squeeze << " N, grip " << strong.grip);
+  CHECK(strong.load_squeeze > 0.0);
+  CHECK(strong.grip > 1.0);
+  CHECK(strong.grip <= 8.0);
+  CHECK(strong.grip ==
+        Approx(
+            std::clamp(1.4 * strong.load_squeeze / (strong.hold_squeeze / strong.grip), 1.0, 8.0)));
+  double most = 0.0;
+  for (int j = 0; j < 7; ++j)
+    most =
+        std::max(most, std::abs(strong.hold_torque[j]) / models::schunk_sdh.joint_spec(j).effort);
+  CHECK(most == Approx(0.05 * strong.grip));
+  CHECK(strong_fraction == std::max(1.0, most));
+  const ClosingRecord record = closing_record(strong);
+  CHECK(record.grip == strong.grip);
+  CHECK(record.load_squeeze == strong.load_squeeze);
+  CHECK(record.hold_squeeze == strong.hold_squeeze);
+  CloseOptions bad;
+  bad.max_grip = 0.5;
+  auto scene = test::sdh_bottle_scene();
+  CHECK_THROWS_WITH(close_hand(scene, bad), Catch::Contains("max_grip"));
+  bad.max_grip = 2.0;
+  bad.grip_margin = -1.0;
+  CHECK_THROWS_WITH(close_hand(scene, bad), Catch::Contains("grip_margin"));
+}
+
+TEST_CASE("an effort fraction above 1 gives the servos that much more torque and stiffness",
+          "[evaluation][close]") {
+  auto scene = test::sdh_bottle_scene();
+  const double k = scene.servo_stiffness(1);
+  CHECK(k == Approx(models::schunk_sdh.joint_spec(1).effort / scene.servo_reach(1)));
+  scene.set_effort_fraction(0.5);  // a weaker motor, as stiff
+  CHECK(scene.servo_stiffness(1) == k);
+  CHECK(scene.effort_limit(1) == Approx(0.5 * models::schunk_sdh.joint_spec(1).effort));
+  scene.set_effort_fraction(3.0);  // a stronger grip, three times as stiff
+  CHECK(scene.servo_stiffness(1) == Approx(3.0 * k));
+  CHECK(scene.effort_limit(1) == Approx(3.0 * models::schunk_sdh.joint_spec(1).effort));
+  // hold_targets() puts each target where the stiffer servo gives the asked torque.
+  Vec<7> load = Vec<7>::Zero();
+  load[1] = 2.0;
+  const Vec<7> q = scene.joint_positions();
+  CHECK((hold_targets(scene, q, load)[1] - q[1]) * scene.servo_stiffness(1) ==
+        Approx(2.0 * models::schunk_sdh.joint_spec(1).effort));
+  CHECK_THROWS_WITH(scene.set_effort_fraction(10.5), Catch::StartsWith("fraction: "));
+  CHECK_THROWS_WITH(scene.set_effort_fraction(0.0), Catch::StartsWith("fraction: "));
 }
 
 TEST_CASE("closing proximal first wraps the fingers: the knuckle, then the middle joint",

@@ -188,6 +188,10 @@ TEST_CASE("Actuators refuse bad input, naming it", "[motors][input]") {
       [&] { w.set_actuator_target(a, std::numeric_limits<double>::infinity()); }, "target");
   test::check_throws_naming([&] { w.set_actuator_max_effort(a, 0.0); }, "max_effort");
   test::check_throws_naming([&] { w.set_actuator_inertia(a, -1.0); }, "inertia");
+  test::check_throws_naming([&] { w.set_actuator_gains(a, 0.0, 0.01); }, "stiffness");
+  test::check_throws_naming([&] { w.set_actuator_gains(a, std::nan(""), 0.01); }, "stiffness");
+  test::check_throws_naming([&] { w.set_actuator_gains(a, 10.0, -0.01); }, "damping_time");
+  test::check_throws_naming([&] { w.set_actuator_gains(a + 1, 10.0, 0.01); }, "a");
   test::check_throws_naming([&] { w.set_actuator_force(a, std::nan("")); }, "force");
   test::check_throws_naming([&] { w.set_actuator_position(a, 1.5); }, "position");
   static const std::array<ShapeSpec, 1> shape{sphere("", {0, 0, 0}, 0.01)};

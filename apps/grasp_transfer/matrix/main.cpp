@@ -9,7 +9,8 @@
 //   transfer_matrix [--objects hammer,bottle]
 //                   [--methods topological,paper,transplant,fingertip,virtual_finger]
 //                   [--hypotheses demonstrator|box] [--closing balanced|held|free]
-//                   [--max-hypotheses N] [--seed S] [--jobs N] [--out DIR] [--force] [--quiet]
+//                   [--human-grip G] [--max-hypotheses N] [--seed S] [--jobs N]
+//                   [--out DIR] [--force] [--quiet]
 //
 // The demonstrations are grasp_transfer's (the same hypotheses, closing protocol and seeds, the
 // same defaults): each stable one (built-in) is transferred, and each cell is also counted on one
@@ -74,13 +75,13 @@ constexpr std::string_view usage =
     "usage: transfer_matrix [--objects hammer,bottle]\n"
     "                       [--methods topological,paper,transplant,fingertip,virtual_finger]\n"
     "                       [--hypotheses demonstrator|box] [--closing balanced|held|free]\n"
-    "                       [--max-hypotheses N] [--seed S] [--jobs N] [--out DIR] [--force]\n"
-    "                       [--quiet]\n"
+    "                       [--human-grip G] [--max-hypotheses N] [--seed S] [--jobs N]\n"
+    "                       [--out DIR] [--force] [--quiet]\n"
     "Transfers the stable human demonstrations of grasp_transfer's experiment (its hypotheses,\n"
-    "closing and seeds; --hypotheses and --closing as there, default demonstrator and\n"
-    "balanced) to the SDH, Barrett, Allegro, LEAP and Shadow hands, and SDH -> Allegro,\n"
-    "Allegro -> Shadow, each cell also counted on one demonstration per distinct grasp;\n"
-    "writes DIR/matrix.json,\n"
+    "closing and seeds; --hypotheses, --closing and --human-grip as there, default\n"
+    "demonstrator, balanced and 5) to the SDH, Barrett, Allegro, LEAP and Shadow hands,\n"
+    "and SDH -> Allegro, Allegro -> Shadow, each cell also counted on one demonstration per\n"
+    "distinct grasp; writes DIR/matrix.json,\n"
     "DIR/matrix.md and DIR/index.html (default DIR: matrix), staged and committed together;\n"
     "a non-empty DIR without a matrix.json of transfer_matrix is refused unless --force.\n"
     "Methods: every method of the fair experiment but closed_windings (docs/transfer.md,\n"
@@ -100,7 +101,8 @@ Options parse(std::span<char*> args) {
       continue;
     }
     if (a != "--objects" && a != "--methods" && a != "--max-hypotheses" && a != "--seed" &&
-        a != "--jobs" && a != "--out" && a != "--hypotheses" && a != "--closing")
+        a != "--jobs" && a != "--out" && a != "--hypotheses" && a != "--closing" &&
+        a != "--human-grip")
       throw invalid_argument("unknown option " + detail::quote_argument(a) +
                              " (--help lists them)");
     if (seen[std::string(a)]) detail::throw_invalid_argument(a, "given twice");
@@ -124,6 +126,8 @@ Options parse(std::span<char*> args) {
       o.hypotheses = detail::parse_hypothesis_rule(v, a);
     } else if (a == "--closing") {
       detail::parse_closing(v, a, o.transfer.sim);
+    } else if (a == "--human-grip") {
+      o.transfer.sim.human_max_grip = detail::parse_human_grip(v, a);
     } else if (a == "--max-hypotheses") {
       o.max_hypotheses = detail::parse_cli_number<int>(v, a);
       if (o.max_hypotheses < 0) detail::throw_invalid_argument(a, "expected >= 0");
@@ -412,6 +416,7 @@ int run(const Options& o, OutputFolder& folder) {
   doc.set("closing", !o.transfer.sim.close.hold_object    ? "free"
                      : o.transfer.sim.close.balanced_hold ? "balanced"
                                                           : "held");
+  doc.set("human_max_grip", o.transfer.sim.human_max_grip);
   doc.set("demonstrations", stable_demos);
   doc.set("distinct_demonstrations", distinct_demos);
   doc.set("second_judge", second_judge ? "mujoco" : "none");

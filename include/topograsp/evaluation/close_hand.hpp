@@ -63,10 +63,21 @@ struct CloseOptions {
   /// hold_fraction of its limit, whether or not the forces balance. Default false (--closing
   /// balanced: true).
   bool balanced_hold = false;
+  /// With balanced_hold, how much harder than hold_fraction's grip the hand may grip where the
+  /// object's load asks for it (grip-load coupling, balance_hold() with GripLoad: the balanced
+  /// forces scaled to (1 + grip_margin) times the squeeze the object's weight asks of the
+  /// contacts, never below hold_fraction's grip), in [1, k_max_grip]. The motors may then give
+  /// up to that multiple of hold_fraction of their limits, above the limits where it exceeds 1
+  /// (the human hand's efforts are holding torques, about a fifth of its strength:
+  /// GraspSimOptions::human_max_grip). Default 1: the grip is hold_fraction's alone.
+  double max_grip = 1.0;
+  /// The safety margin of that grip over what the load asks, >= 0. Default 0.4 (people grip
+  /// 10 to 40 % above the force at which the object would slip: Westling and Johansson 1984).
+  double grip_margin = 0.4;
 };
 
 /// The numeric fields of CloseOptions with their valid ranges (close_hand() checks them).
-inline constexpr ParameterTable<CloseOptions, 6> close_parameters{{
+inline constexpr ParameterTable<CloseOptions, 8> close_parameters{{
     {"step", &CloseOptions::step, 0.0, unbounded, "rad or m: the search's joint increment", true},
     {"bisections", &CloseOptions::bisections, 0, 64, "bisections of each contact value"},
     {"touch_distance", &CloseOptions::touch_distance, 0.0, unbounded,
@@ -77,6 +88,10 @@ inline constexpr ParameterTable<CloseOptions, 6> close_parameters{{
      "physics steps from first contact to the stall"},
     {"release_steps", &CloseOptions::release_steps, 0, 1000000,
      "physics steps after the object's release"},
+    {"max_grip", &CloseOptions::max_grip, 1.0, k_max_grip,
+     "the strongest grip the load may ask, a multiple of hold_fraction's"},
+    {"grip_margin", &CloseOptions::grip_margin, 0.0, 10.0,
+     "the grip's safety margin over what the load asks"},
 }};
 
 /// The most increments close_hand() takes per joint: CloseOptions::step must be at least the
@@ -108,6 +123,13 @@ struct CloseResult {
   bool balanced = false;
   /// balance_hold()'s imbalance of the forces it balanced (0 when not balanced).
   double hold_imbalance = 0.0;
+  /// The total normal force of the balanced hold (N; 0 when not balanced).
+  double hold_squeeze = 0.0;
+  /// The total normal force the object's weight asks of the contacts (balance_hold()'s
+  /// load_squeeze, N; 0 when the grip does not follow the load).
+  double load_squeeze = 0.0;
+  /// The grip held with, as a multiple of hold_fraction's (1 unless the load asked for more).
+  double grip = 1.0;
 };
 
 /// What a closing did, as a grasp's record keeps it (HumanGrasp, HandTransfer).
@@ -122,15 +144,25 @@ struct ClosingRecord {
   std::vector<double> hold_torque;
   bool balanced = false;        ///< whether the hold is balance_hold()'s
   double hold_imbalance = 0.0;  ///< its imbalance (0 when not balanced)
+  double hold_squeeze = 0.0;    ///< its total normal force (N; 0 when not balanced)
+  double load_squeeze = 0.0;    ///< what the object's weight asks of the contacts (N)
+  double grip = 1.0;            ///< the grip, a multiple of hold_fraction's
 };
 
 /// The record of closing \p c.
 template <int NQ>
 [[nodiscard]] ClosingRecord closing_record(const CloseResult<NQ>& c) {
-  return {c.touching_joints, c.contacts,
-          c.object_shift,    c.object_turn,
-          c.contact_points,  std::vector<double>(c.hold_torque.data(), c.hold_torque.data() + NQ),
-          c.balanced,        c.hold_imbalance};
+  return {c.touching_joints,
+          c.contacts,
+          c.object_shift,
+          c.object_turn,
+          c.contact_points,
+          std::vector<double>(c.hold_torque.data(), c.hold_torque.data() + NQ),
+          c.balanced,
+          c.hold_imbalance,
+          c.hold_squeeze,
+          c.load_squeeze,
+          c.grip};
 }
 
 /// The targets a closed hand holds with: each joint with a closing direction at its closed
@@ -164,14 +196,16 @@ template <const auto& M>
 }
 
 /// The targets with which a hand at \p q holds with \p load (per joint, the signed fraction of
-/// its torque limit it presses with): each joint's servo target that fraction of its servo's
-/// reach (HandScene::servo_reach()) from where it stands, so that it presses with that torque
-/// there and stiffens against a load up to its full limit (with the scene's effort fraction 1).
+/// its effort, LinkSpec::effort, it presses with): each joint's servo target as far from where
+/// it stands as its servo's stiffness now (HandScene::servo_stiffness()) needs to give that
+/// torque there (load x servo_reach() with an effort fraction of at most 1), so that it stiffens
+/// against a load up to its limit now (HandScene::effort_limit()).
 template <const auto& M, class S>
 [[nodiscard]] Vec<M.nq> hold_targets(const HandScene<M, S>& scene, const Vec<M.nq>& q,
                                      const Vec<M.nq>& load) noexcept {
   Vec<M.nq> out = q;
-  for (int i = 0; i < M.nq; ++i) out[i] += load[i] * scene.servo_reach(i);
+  for (int i = 0; i < M.nq; ++i)
+    out[i] += load[i] * scene.servo_reach(i) / std::max(1.0, scene.effort_fraction());
   return out;
 }
 
@@ -343,13 +377,20 @@ CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options
   // The holding torques: uniform, or balanced over the contacts the fingers closed to, from now
   // as position servos with their full limits.
   Vec<nq> load = uniform_hold_loads<M>(options.hold_fraction);
+  double servo_fraction = 1.0;  // the motors' limits while holding: above 1 for a stronger grip
   if (options.balanced_hold && result.status == Status::success) {
-    const HoldBalance<nq> balance = balance_hold(scene, options.hold_fraction);
+    const GripLoad grip{scene.object_mass() * gravity.template cast<double>().norm(),
+                        options.grip_margin, options.max_grip};
+    const HoldBalance<nq> balance = balance_hold(scene, options.hold_fraction, grip);
     if (balance.found) {
       load = hold_loads<M>(balance.torque);
       result.balanced = true;
       result.hold_imbalance = balance.imbalance;
-      scene.set_effort_fraction(1.0);
+      result.hold_squeeze = balance.squeeze;
+      result.load_squeeze = balance.load_squeeze;
+      result.grip = balance.grip;
+      servo_fraction = std::max(1.0, load.cwiseAbs().maxCoeff());
+      scene.set_effort_fraction(servo_fraction);
       scene.set_joint_targets(hold_targets(scene, scene.joint_positions(), load));
     }
   }
@@ -363,7 +404,7 @@ CloseResult<M.nq> close_hand(HandScene<M, S>& scene, const CloseOptions& options
   result.q_closed = scene.joint_positions();
   // Hold: the same torques where the fingers stand, as position servos with their full limits.
   scene.set_joint_targets(hold_targets(scene, result.q_closed, load));
-  scene.set_effort_fraction(1.0);
+  scene.set_effort_fraction(servo_fraction);
   result.contacts = scene.hand_contacts();
   const Eigen::Isometry3d to_object = scene.object_pose().inverse();
   result.contact_points = scene.hand_contact_list();

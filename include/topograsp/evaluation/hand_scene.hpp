@@ -59,6 +59,10 @@ struct HandContact {
   double friction = 0.0;        ///< the Coulomb coefficient of its pair of shapes
 };
 
+/// The largest multiple of a joint's effort (LinkSpec::effort) a hand scene's motor may give
+/// (HandScene::set_effort_fraction()).
+inline constexpr double k_max_effort_fraction = 10.0;
+
 /// A hand of model \p M (a reference to a constexpr Model) holding an object, over scalar \p S.
 ///
 /// The hand frame (the model's root link) is carried to hand_pose() like a mocap body. Each
@@ -134,7 +138,7 @@ class HandScene {
       a.inertia = inertia_[i];
       a.max_effort = M.joint_spec(i).effort;
       a.max_velocity = M.joint_spec(i).velocity;
-      a.stiffness = spec.effort / servo_reach(i);
+      a.stiffness = servo_stiffness(i);
       a.damping_time = options.servo_damping_time;
       actuator_[static_cast<std::size_t>(i)] = world_.add_actuator(a);
     }
@@ -177,14 +181,20 @@ class HandScene {
       world_.set_actuator_target(actuator_[static_cast<std::size_t>(i)], target_[i]);
   }
   /// Scales every motor's torque limit to \p fraction of the joint's effort (LinkSpec::effort):
-  /// 1 to close, a stated fraction to hold (CloseOptions::hold_fraction). Throws
-  /// topograsp::invalid_argument naming "fraction" unless it is in (0, 1].
+  /// 1 to close, a stated fraction to hold (CloseOptions::hold_fraction); above 1 for a grip
+  /// stronger than the model's efforts (CloseOptions::max_grip: the human hand's efforts are
+  /// holding torques, not its strength), the servos then as much stiffer (servo_stiffness()), as
+  /// a muscle stiffens in proportion to the force it gives. Throws topograsp::invalid_argument
+  /// naming "fraction" unless it is in (0, k_max_effort_fraction].
   void set_effort_fraction(double fraction) {
-    if (!(fraction > 0.0 && fraction <= 1.0))
-      detail::throw_invalid_argument("fraction", "expected a value in (0, 1]");
+    if (!(fraction > 0.0 && fraction <= k_max_effort_fraction))
+      detail::throw_invalid_argument("fraction", "expected a value in (0, 10]");
     effort_fraction_ = fraction;
-    for (int i = 0; i < nq; ++i)
-      world_.set_actuator_max_effort(actuator_[static_cast<std::size_t>(i)], effort_limit(i));
+    for (int i = 0; i < nq; ++i) {
+      const int a = actuator_[static_cast<std::size_t>(i)];
+      world_.set_actuator_max_effort(a, effort_limit(i));
+      world_.set_actuator_gains(a, servo_stiffness(i), options_.servo_damping_time);
+    }
   }
   /// The fraction of each joint's effort its motor may give now.
   [[nodiscard]] double effort_fraction() const noexcept { return effort_fraction_; }
@@ -201,6 +211,11 @@ class HandScene {
   [[nodiscard]] double servo_reach(int i) const noexcept {
     return M.joint_spec(i).type == JointType::prismatic ? options_.servo_distance
                                                         : options_.servo_angle;
+  }
+  /// The stiffness of configuration entry \p i's servo now (N m/rad, or N/m): its effort over
+  /// servo_reach(), times the effort fraction where that is above 1.
+  [[nodiscard]] double servo_stiffness(int i) const noexcept {
+    return std::max(1.0, effort_fraction_) * M.joint_spec(i).effort / servo_reach(i);
   }
   /// The joints' positions (dim nq, rad or m): where the motors have taken them.
   [[nodiscard]] const Config& joint_positions() const noexcept { return q_; }

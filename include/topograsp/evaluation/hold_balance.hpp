@@ -28,6 +28,22 @@ struct HoldBalance {
   /// all push one way.
   double imbalance = 0.0;
   int contacts = 0;  ///< the contact points the forces were distributed over
+  /// The total normal force (N) that the object's weight asks of these contacts in the most
+  /// demanding of the six directions they can hold it in (load_squeeze()); 0 when the grip does
+  /// not follow the load (GripLoad::max_grip 1 or no weight) or they hold it in none.
+  double load_squeeze = 0.0;
+  /// The grip held with, as a multiple of hold_fraction's (1: the fixed grip; up to
+  /// GripLoad::max_grip when the load asks for more).
+  double grip = 1.0;
+};
+
+/// How balance_hold()'s grip follows the object's load (grip-load coupling: a person grips an
+/// object with what its load asks plus a safety margin, Westling and Johansson 1984). With
+/// max_grip 1 (the default) the grip is hold_fraction's alone.
+struct GripLoad {
+  double weight = 0.0;    ///< the object's weight (N), m |g|; 0: the grip does not follow it
+  double margin = 0.4;    ///< the safety margin over what the load asks (0.4: 40 %)
+  double max_grip = 1.0;  ///< the strongest grip, as a multiple of hold_fraction's (>= 1)
 };
 
 /// The cone edges, the weight of the torques' evenness against the balance, and the rounds of
@@ -52,7 +68,14 @@ inline constexpr int k_hold_rounds = 8;
 /// w_j of the evenness term start at 1 and are reweighted k_hold_rounds times towards the joints
 /// that carry the most (Lawson's minimax iteration), which raises the squeeze the limits allow.
 /// A pair without friction has a cone of one edge, its normal.
-/// \throws topograsp::invalid_argument naming "hold_fraction" unless it is in (0, 1].
+/// With \p grip (GripLoad::max_grip above 1 and a weight), the grip then follows the load: the
+/// same forces are scaled to (1 + margin) times load_squeeze(), the total normal force the
+/// object's weight asks of these contacts, when that is more than hold_fraction's grip, up to
+/// max_grip times it (the most loaded joint then above hold_fraction of its limit, up to
+/// max_grip x hold_fraction).
+/// \throws topograsp::invalid_argument naming "hold_fraction" unless it is in (0, 1], or
+/// "grip.weight", "grip.margin", "grip.max_grip" unless finite and >= 0, >= 0 and in
+/// [1, k_max_grip].
 namespace detail {
 
 // What solve_hold_balance() found: per unit of total normal force, the joints' torques, and the
@@ -101,13 +124,50 @@ UnitHoldBalance solve_hold_balance(const Eigen::MatrixXd& wrench, const Eigen::M
   return out;
 }
 
+// The total normal force (N) with which the contacts of `wrench` (6 x edges: each cone edge's
+// force and its torque / length about the object's centre of mass) hold a weight of `weight`
+// (N) along each of the six directions of `frame`'s axes, the largest over the directions they
+// can hold it in (a residual below 5 % of the weight), 0 when none: per direction the
+// non-negative least-squares edge forces that balance the weight, with a small cost on their
+// total normal force (each edge's normal component is 1), so that of the forces that balance it
+// the least squeeze is taken.
+template <class = void>
+double load_squeeze(const Eigen::MatrixXd& wrench, const Mat3& frame, double weight) {
+  constexpr double squeeze_cost = 1e-3, tolerance = 0.05;
+  const Eigen::Index cols = wrench.cols();
+  Eigen::MatrixXd A(7, cols);
+  A.topRows(6) = wrench;
+  A.row(6).setConstant(squeeze_cost);
+  double most = 0.0;
+  for (int axis = 0; axis < 3; ++axis)
+    for (const double sign : {1.0, -1.0}) {
+      Eigen::VectorXd b = Eigen::VectorXd::Zero(7);
+      b.head<3>() = -sign * weight * frame.col(axis);  // the contacts hold the weight
+      const NonnegativeLeastSquares solved = nonnegative_least_squares(A, b);
+      if ((wrench * solved.x - b.head<6>()).norm() <= tolerance * weight)
+        most = std::max(most, solved.x.sum());
+    }
+  return most;
+}
+
 }  // namespace detail
 
+/// The largest multiple of hold_fraction's grip that GripLoad::max_grip may give (with
+/// hold_fraction 1, the motors' largest effort fraction).
+inline constexpr double k_max_grip = k_max_effort_fraction;
+
 template <const auto& M, class S>
-[[nodiscard]] HoldBalance<M.nq> balance_hold(const HandScene<M, S>& scene, double hold_fraction) {
+[[nodiscard]] HoldBalance<M.nq> balance_hold(const HandScene<M, S>& scene, double hold_fraction,
+                                             const GripLoad& grip = {}) {
   constexpr int nq = M.nq;
   if (!(hold_fraction > 0.0 && hold_fraction <= 1.0))
     detail::throw_invalid_argument("hold_fraction", "expected a value in (0, 1]");
+  if (!(std::isfinite(grip.weight) && grip.weight >= 0.0))
+    detail::throw_invalid_argument("grip.weight", "expected a finite value >= 0 (N)");
+  if (!(std::isfinite(grip.margin) && grip.margin >= 0.0))
+    detail::throw_invalid_argument("grip.margin", "expected a finite value >= 0");
+  if (!(grip.max_grip >= 1.0 && grip.max_grip <= k_max_grip))
+    detail::throw_invalid_argument("grip.max_grip", "expected a value in [1, 10]");
   HoldBalance<nq> out;
   const std::vector<HandContact> contacts = scene.hand_contact_list();
   if (contacts.empty()) return out;
@@ -143,7 +203,12 @@ template <const auto& M, class S>
   double load = 0.0;  // the largest fraction of a joint's limit per newton of squeeze
   for (int j = 0; j < nq; ++j) load = std::max(load, std::abs(unit.torque[j]) / effort[j]);
   if (!(load > 0.0)) return out;
-  const double scale = hold_fraction / load;
+  double scale = hold_fraction / load;
+  if (grip.max_grip > 1.0 && grip.weight > 0.0) {
+    out.load_squeeze = detail::load_squeeze(wrench, R, grip.weight);
+    out.grip = std::clamp((1.0 + grip.margin) * out.load_squeeze / scale, 1.0, grip.max_grip);
+    scale *= out.grip;
+  }
   out.found = true;
   out.torque = scale * Vec<nq>(unit.torque);
   out.squeeze = scale;

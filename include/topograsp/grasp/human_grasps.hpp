@@ -57,6 +57,11 @@ struct GraspSimOptions {
   /// model's efforts are already the torques of a comfortable holding grasp, about a fifth of
   /// maximal strength (docs/models.md), not maximal ones.
   double human_hold_fraction = 1.0;
+  /// How much harder than its holding torques the human hand grips where the object's load asks
+  /// for it, under the balanced hold (CloseOptions::max_grip: grip-load coupling). Default 5:
+  /// the holding torques are about a fifth of a person's maximal strength (docs/models.md); 1
+  /// holds with the holding torques alone.
+  double human_max_grip = 5.0;
   StabilityOptions stability{};  ///< the stability suite (its seed is set per grasp)
   /// Friction between the hands and the objects: 0 (the default) takes each pair from the table
   /// of materials (friction_coefficient(), docs/objects.md); a positive value is the Coulomb
@@ -219,6 +224,7 @@ HumanClosing close_human_at(const GraspObject& object, const Vec<26>& touched,
       object_spec(object, HandSurface::human_skin, options.friction), options.scene);
   CloseOptions close = options.close;
   close.hold_fraction = options.human_hold_fraction;
+  close.max_grip = options.human_max_grip;
   const CloseResult<20> closing = close_hand(scene, close);
   return HumanClosing{touched, std::move(scene), closing};
 }

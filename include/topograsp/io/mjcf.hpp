@@ -159,11 +159,11 @@ inline void require_mjcf_options(const MjcfOptions& o, int nq) {
 ///   `boundmass` 1e-4 kg and `boundinertia` 1e-9 kg m^2;
 /// - one `<position>` actuator per configuration entry on its joint, `ctrlrange` = the joint
 ///   limits, `forcerange` = +-(effort x fraction), and the built-in servo's spring: `kp` =
-///   effort / HandScene::servo_reach() and the joint's damping kp x
-///   HandSceneOptions::servo_damping_time (MuJoCo 2.2's position actuator has no kv; the joint
-///   damping is integrated implicitly); with effort 0 (the model gives none and options.effort is
-///   empty) the actuator is written without a force range and with kp = 1 / reach, and an XML
-///   comment says so;
+///   HandScene::servo_stiffness() (effort / servo_reach(), times the fraction above 1) and the
+///   joint's damping kp x HandSceneOptions::servo_damping_time (MuJoCo 2.2's position actuator has
+///   no kv; the joint damping is integrated implicitly); with effort 0 (the model gives none and
+///   options.effort is empty) the actuator is written without a force range and with kp = 1 /
+///   reach, and an XML comment says so;
 /// - mimic joints as `<equality><joint joint1="mimic" joint2="source" polycoef="offset
 ///   multiplier 0 0 0"/>`;
 /// - the object as a body named `object` with a free joint, its World mass, centre of mass and
@@ -216,7 +216,8 @@ void write_mjcf(std::ostream& os, const HandScene<M, S>& scene, const MjcfOption
     // The built-in servo's stiffness: the full effort at the scene's servo reach.
     const double hold = scene.servo_reach(i);
     limit[u] = motors.effort[u] * motors.fraction;
-    kp[u] = (motors.effort[u] > 0.0 ? motors.effort[u] : 1.0) / hold;
+    kp[u] =
+        std::max(1.0, motors.fraction) * (motors.effort[u] > 0.0 ? motors.effort[u] : 1.0) / hold;
   }
   const auto joint_value = [&](int l) {
     const Link& link = M.links[static_cast<std::size_t>(l)];

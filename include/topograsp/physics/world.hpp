@@ -290,6 +290,17 @@ class World {
     require_positive(max_effort, "max_effort");
     actuators_[static_cast<std::size_t>(a)].max_effort = static_cast<S>(max_effort);
   }
+  /// Sets the servo gains of actuator \p a: its \p stiffness (N m/rad or N/m, > 0) and its
+  /// damping, stiffness * \p damping_time (s, >= 0), as ActuatorDesc gives them. Throws
+  /// topograsp::invalid_argument for a bad index or a value outside those ranges.
+  void set_actuator_gains(int a, double stiffness, double damping_time) {
+    detail::require_index(a, actuators_.size(), "actuator", "a");
+    require_positive(stiffness, "stiffness");
+    require_non_negative(damping_time, "damping_time");
+    detail::Actuator<S>& x = actuators_[static_cast<std::size_t>(a)];
+    x.stiffness = static_cast<S>(stiffness);
+    x.damping = static_cast<S>(stiffness * damping_time);
+  }
   /// Sets the inertia of actuator \p a (kg m^2 or kg), e.g. each step from the configuration.
   /// Throws topograsp::invalid_argument as ActuatorDesc::inertia is checked.
   void set_actuator_inertia(int a, double inertia) {
