@@ -179,9 +179,8 @@ inline double parse_human_grip(std::string_view value, std::string_view option) 
   const double g = parse_cli_number<double>(value, option);
   if (!(g >= 1.0 && g <= k_max_grip))
     throw_invalid_argument(option,
-                           "expected a multiple of the human hand's holding torques in [1, 10], "
-                           "got " +
-                               quote_argument(value));
+                           "expected a multiple of the human hand's holding torques in [1, " +
+                               number_text(k_max_grip) + "], got " + quote_argument(value));
   return g;
 }
 

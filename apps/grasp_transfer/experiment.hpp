@@ -358,7 +358,9 @@ void validate_experiment_options(const ExperimentOptions& options,
     if (!(f > 0.0 && f <= 1.0)) detail::throw_invalid_argument(name, "expected a value in (0, 1]");
   const double grip = options.transfer.sim.human_max_grip;
   if (!(grip >= 1.0 && grip <= k_max_grip))
-    detail::throw_invalid_argument("transfer.sim.human_max_grip", "expected a value in [1, 10]");
+    detail::throw_invalid_argument(
+        "transfer.sim.human_max_grip",
+        "expected a value in [1, " + detail::number_text(k_max_grip) + "]");
   validate_parameters(options.transfer.sim.close, close_parameters, "transfer.sim.close.");
   validate_stability_options(options.transfer.sim.stability, "transfer.sim.stability");
   for (const std::pair<std::string, int>& s : options.skip)

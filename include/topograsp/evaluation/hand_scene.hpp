@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include <topograsp/core/number_text.hpp>
 #include <topograsp/evaluation/grasp_wrench.hpp>
 #include <topograsp/evaluation/object_spec.hpp>
 #include <topograsp/geometry/mass_properties.hpp>
@@ -188,7 +189,9 @@ class HandScene {
   /// naming "fraction" unless it is in (0, k_max_effort_fraction].
   void set_effort_fraction(double fraction) {
     if (!(fraction > 0.0 && fraction <= k_max_effort_fraction))
-      detail::throw_invalid_argument("fraction", "expected a value in (0, 10]");
+      detail::throw_invalid_argument(
+          "fraction",
+          "expected a value in (0, " + detail::number_text(k_max_effort_fraction) + "]");
     effort_fraction_ = fraction;
     for (int i = 0; i < nq; ++i) {
       const int a = actuator_[static_cast<std::size_t>(i)];

@@ -167,7 +167,8 @@ template <const auto& M, class S>
   if (!(std::isfinite(grip.margin) && grip.margin >= 0.0))
     detail::throw_invalid_argument("grip.margin", "expected a finite value >= 0");
   if (!(grip.max_grip >= 1.0 && grip.max_grip <= k_max_grip))
-    detail::throw_invalid_argument("grip.max_grip", "expected a value in [1, 10]");
+    detail::throw_invalid_argument(
+        "grip.max_grip", "expected a value in [1, " + detail::number_text(k_max_grip) + "]");
   HoldBalance<nq> out;
   const std::vector<HandContact> contacts = scene.hand_contact_list();
   if (contacts.empty()) return out;

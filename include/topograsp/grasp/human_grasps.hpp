@@ -13,6 +13,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include <topograsp/evaluation/close_hand.hpp>
 #include <topograsp/evaluation/grasp_wrench.hpp>
@@ -140,20 +141,32 @@ struct GraspJudgement {
   QualityRecord quality;
 };
 
+/// The reason a judge's hard-shake record gives when another engine decides (judge_grasp).
+inline constexpr std::string_view k_hard_shake_deciding_only =
+    "not run (the engine that decides runs the hard shake)";
+
 /// Judges the grasp that \p scene holds as closing left it: the stability suite in the built-in
 /// stepper, the second judge \p second (if any) with the same options, whichever
 /// options.second_judge_decides names decides; and the Ferrari-Canny epsilon of its contacts
 /// (where qhull is linked), torques scaled by the object's max radius from its centre of mass.
+/// The hard shake (a stress reported apart, never part of the verdict) runs in the engine that
+/// decides only, unless options.stability.every_test: the other's record has steps 0 and the
+/// reason k_hard_shake_deciding_only.
 /// Throws as stability_suite() for bad options.stability.
 template <const auto& M>
 [[nodiscard]] GraspJudgement judge_grasp(const HandScene<M>& scene, const GraspObject& object,
                                          const GraspSimOptions& options,
                                          const SecondJudge<M>& second) {
   GraspJudgement j;
-  j.stability = stability_suite(scene, options.stability);
+  StabilityOptions builtin = options.stability, other = options.stability;
+  const bool one_hard_shake = second && !options.stability.every_test;
+  if (one_hard_shake) (options.second_judge_decides ? builtin : other).hard_shake.steps = 0;
+  j.stability = stability_suite(scene, builtin);
   if (second) {
-    j.second = second(scene, options.stability);
+    j.second = second(scene, other);
     if (options.second_judge_decides) std::swap(j.stability, *j.second);
+    if (one_hard_shake && options.stability.hard_shake.steps > 0)
+      j.second->tests[k_stability_tests - 1].reason = k_hard_shake_deciding_only;
   }
 #ifdef TOPOGRASP_HAVE_QHULL
   const std::vector<ContactForQuality> contacts = scene.hand_contact_points();
