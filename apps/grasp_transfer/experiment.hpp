@@ -277,7 +277,7 @@ HandTransfer<M> experiment_transfer(TransferMethod method, const GraspObject& ob
   } else {
     TransferRun<M> refusal(method, unusable_human_grasp(g), options);
     if (refusal.refused()) return refusal.unplanned();
-    return transfer_hand<M>(method, object, source_grasp(g), options, second);
+    return transfer_hand<M>(method, object, describe_source(g), options, second);
   }
 }
 }  // namespace detail

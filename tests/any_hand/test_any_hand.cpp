@@ -2,11 +2,14 @@
 // Any hand to any hand (grasp/transfer/hand.hpp, and the SDH's Table I methods it matches): hand
 // profiles, the frame two hands meet in, the winding targets of a hand with more or fewer curves
 // than the source, the fingertip correspondence, transfer_hand (every method) on an imported hand
-// from the human hand and from the SDH, transfer_hand_on_arm, and what they do with bad input.
+// from the human hand and from the SDH, transfer_hand_on_arm, a source as data (SourceGrasp), and
+// what they do with bad input.
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <utility>
 
 #include <catch2/catch.hpp>
 
@@ -225,6 +228,113 @@ TEST_CASE("SDH -> Allegro: a robot grasp is a source; two SDH curves give three 
       hand_windings<models::schunk_sdh>(bottle.centre_of_mass(), sdh.hand_pose, sdh.q_closed);
   const double hi = w.maxCoeff(), lo = w.minCoeff();
   CHECK(*r.source_winding == Vec3(hi, lo, lo));
+  // The fingertip mapping from three fingers to four: the thumb and two fingers fitted (the fit
+  // of three pairs), the Allegro's middle finger left to close with the hand.
+  const SourceGrasp from_sdh = describe_source(source_grasp(sdh));
+  REQUIRE(detail::fingertip_pairs<models::allegro_hand>(from_sdh).size() == 3);
+  const auto f = transfer_hand<models::allegro_hand>(TransferMethod::fingertip, bottle, from_sdh);
+  INFO(f.reason);
+  CHECK(f.planned);
+  CHECK(f.method == TransferMethod::fingertip);
+}
+
+TEST_CASE(
+    "a source is data: describe_source keeps what the methods read, exactly as the model gives "
+    "it",
+    "[any_hand][source]") {
+  const GraspObject bottle = objects::bottle();
+  const HumanGrasp& g = bottle_demonstration();
+  REQUIRE(g.stable());
+  constexpr auto& H = models::human_hand;
+  const HandGrasp<H> hand = source_grasp(g);
+  const SourceGrasp s = describe_source(g);
+  CHECK(unusable_source(s).empty());
+  CHECK(s.hand == H.name.view());
+  CHECK(s.root.matrix() == hand.root.matrix());
+  CHECK(s.grasp_frame.matrix() == grasp_frame(hand).matrix());
+  CHECK(s.palm_frame.matrix() == palm_frame(hand).matrix());
+  CHECK(s.digits.size() == H.fingers.size());
+  CHECK(s.thumb == H.thumb);
+  CHECK(static_cast<int>(s.curves.size()) == hand_curve_count<H>);
+  CHECK_FALSE(s.palm.empty());
+  // The windings around any point are the model's, to the last bit.
+  for (const Vec3& p :
+       {bottle.centre_of_mass(), Vec3(s.grasp_frame.translation()), Vec3(0.3, -0.1, 0.2)}) {
+    const Eigen::VectorXd w = source_windings(s, p);
+    const Eigen::VectorXd v = hand_windings<H>(p, hand.root, hand.q);
+    CHECK(w == v);
+  }
+  // The digit lengths give the size ratio of the hand models.
+  CHECK(fingertip_scale<models::schunk_sdh>(s) == fingertip_scale<models::schunk_sdh, H>());
+  // A copy made field by field (as a reader of a file would make it) transfers as the grasp does.
+  SourceGrasp copy;
+  copy.hand = "a demonstrator this program does not know";
+  copy.root = s.root;
+  copy.grasp_frame = s.grasp_frame;
+  copy.palm_frame = s.palm_frame;
+  copy.curves = s.curves;
+  copy.digits = s.digits;
+  copy.thumb = s.thumb;
+  copy.palm = s.palm;
+  for (const TransferMethod m : {TransferMethod::transplant, TransferMethod::virtual_finger}) {
+    const auto a = transfer_hand<models::allegro_hand>(m, bottle, hand);
+    const auto b = transfer_hand<models::allegro_hand>(m, bottle, copy);
+    CHECK(a.planned == b.planned);
+    CHECK(a.reason == b.reason);
+    CHECK(a.hand_pose.matrix() == b.hand_pose.matrix());
+    CHECK(a.q_closed == b.q_closed);
+    CHECK(a.stability.stable == b.stability.stable);
+  }
+}
+
+TEST_CASE("a source that is not a usable hand is refused by every method with the reason",
+          "[any_hand][source][errors]") {
+  const GraspObject bottle = objects::bottle();
+  const HumanGrasp& g = bottle_demonstration();
+  REQUIRE(g.stable());
+  const SourceGrasp good = describe_source(g);
+  REQUIRE_FALSE(good.palm.empty());
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::pair<void (*)(SourceGrasp&), const char*> cases[] = {
+      {[](SourceGrasp& s) { s.digits.resize(1); }, "the source hand has fewer than two fingers"},
+      {[](SourceGrasp& s) { s.thumb = 7; }, "the source hand's thumb is not one of its fingers"},
+      {[](SourceGrasp& s) { s.curves.clear(); },
+       "the source hand has no curve to take windings of"},
+      {[](SourceGrasp& s) { s.curves[0].resize(1); },
+       "a curve of the source hand has fewer than two points"},
+      {[](SourceGrasp& s) { s.curves[1][0].x() = nan; },
+       "a curve of the source hand is not finite"},
+      {[](SourceGrasp& s) { s.grasp_frame.translation().y() = nan; },
+       "the source hand pose is not finite"},
+      {[](SourceGrasp& s) { s.digits[2].length = 0.0; },
+       "a fingertip or digit length of the source hand is not finite and positive"},
+      {[](SourceGrasp& s) { s.digits[0].tip.z() = nan; },
+       "a fingertip or digit length of the source hand is not finite and positive"},
+      {[](SourceGrasp& s) { s.palm[0].p.x() = nan; },
+       "a palm shape of the source hand is not finite"},
+  };
+  for (const auto& [spoil, reason] : cases) {
+    SourceGrasp bad = good;
+    spoil(bad);
+    INFO(reason);
+    CHECK(unusable_source(bad) == reason);
+    for (const TransferMethod m :
+         {TransferMethod::topological, TransferMethod::autoclose, TransferMethod::transplant,
+          TransferMethod::fingertip, TransferMethod::virtual_finger}) {
+      const auto r = transfer_hand<models::allegro_hand>(m, bottle, bad);
+      CHECK_FALSE(r.planned);
+      CHECK(r.reason == reason);
+    }
+    CHECK_THROWS_WITH(fingertip_targets<models::allegro_hand>(bottle, bad),
+                      std::string("source: ") + reason);
+  }
+  // A grasp that is not finite: describe_source records why and takes nothing else.
+  HandGrasp<models::human_hand> hand = source_grasp(g);
+  hand.q[5] = nan;
+  const SourceGrasp unusable = describe_source(hand);
+  CHECK(unusable.unusable == "the source configuration is not finite");
+  CHECK(unusable.curves.empty());
+  CHECK(unusable_source(unusable) == "the source configuration is not finite");
 }
 
 TEST_CASE("the fingertip correspondence: thumb to thumb, the fingers spread, each used once",
@@ -262,7 +372,7 @@ TEST_CASE(
   const HumanGrasp& g = bottle_demonstration();
   REQUIRE(g.stable());
   const auto tips = fingertip_targets<models::allegro_hand>(bottle, source_grasp(g));
-  STATIC_REQUIRE(tips.size() == 4);
+  REQUIRE(tips.size() == 4);
   // Each target lies out of the object by the Allegro's tip radius and the contact gap.
   const Composite shape = bottle.composite();
   const GraspSimOptions sim;

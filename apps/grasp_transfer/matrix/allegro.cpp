@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The transfer matrix: human -> Allegro and SDH -> Allegro (pair.hpp).
+// The transfer matrix: every transfer to the Allegro hand, from any source (pair.hpp).
 #include "pair_body.hpp"
 
 namespace matrix {
-TOPOGRASP_MATRIX_PAIR(models::allegro_hand, models::human_hand);
-TOPOGRASP_MATRIX_PAIR(models::allegro_hand, models::schunk_sdh);
+TOPOGRASP_MATRIX_TARGET(models::allegro_hand);
 }  // namespace matrix

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The transfer matrix: human -> Barrett (pair.hpp).
+// The transfer matrix: every transfer to the Barrett hand, from any source (pair.hpp).
 #include "pair_body.hpp"
 
 namespace matrix {
-TOPOGRASP_MATRIX_PAIR(models::barrett_bh8, models::human_hand);
+TOPOGRASP_MATRIX_TARGET(models::barrett_bh8);
 }  // namespace matrix

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The transfer matrix: human -> LEAP (pair.hpp).
+// The transfer matrix: every transfer to the LEAP hand, from any source (pair.hpp).
 #include "pair_body.hpp"
 
 namespace matrix {
-TOPOGRASP_MATRIX_PAIR(models::leap_hand, models::human_hand);
+TOPOGRASP_MATRIX_TARGET(models::leap_hand);
 }  // namespace matrix

@@ -177,7 +177,7 @@ std::vector<Record> transfer_all(const GraspObject& object, const HumanGrasp& g,
                                  const TransferOptions& options) {
   using matrix::transfer_pair;
   std::vector<Record> out;
-  const auto human = source_grasp(g);
+  const SourceGrasp human = describe_source(g);
   const auto& m = o.methods;
   const auto& op = options;
   const auto sdh = transfer_pair<models::schunk_sdh>("human -> SDH", object, human, m, op, out);

@@ -28,27 +28,26 @@ struct Record {
   double winding_error = std::numeric_limits<double>::quiet_NaN();
 };
 
-// \p source (hand S) on \p object transferred to hand T on a free base by each of \p methods in
-// turn (transfer_hand), judged by MuJoCo too where it is linked; one Record per transfer appended
-// to \p out under the name \p pair. Returns the transfers, in the order of \p methods.
-template <const auto& T, const auto& S>
+// \p source (a grasp of any hand) on \p object transferred to hand T on a free base by each of
+// \p methods in turn (transfer_hand), judged by MuJoCo too where it is linked; one Record per
+// transfer appended to \p out under the name \p pair. Returns the transfers, in the order of
+// \p methods. One instantiation per target hand, whatever the source (SourceGrasp).
+template <const auto& T>
 std::vector<HandTransfer<T>> transfer_pair(const std::string& pair, const GraspObject& object,
-                                           const HandGrasp<S>& source,
+                                           const SourceGrasp& source,
                                            const std::vector<TransferMethod>& methods,
                                            const TransferOptions& options,
                                            std::vector<Record>& out);
 
-#define TOPOGRASP_MATRIX_PAIR(T, S)                                \
-  template std::vector<HandTransfer<T>> transfer_pair<T, S>(       \
-      const std::string&, const GraspObject&, const HandGrasp<S>&, \
+#define TOPOGRASP_MATRIX_TARGET(T)                                \
+  template std::vector<HandTransfer<T>> transfer_pair<T>(         \
+      const std::string&, const GraspObject&, const SourceGrasp&, \
       const std::vector<TransferMethod>&, const TransferOptions&, std::vector<Record>&)
 
-extern TOPOGRASP_MATRIX_PAIR(models::schunk_sdh, models::human_hand);
-extern TOPOGRASP_MATRIX_PAIR(models::barrett_bh8, models::human_hand);
-extern TOPOGRASP_MATRIX_PAIR(models::allegro_hand, models::human_hand);
-extern TOPOGRASP_MATRIX_PAIR(models::allegro_hand, models::schunk_sdh);
-extern TOPOGRASP_MATRIX_PAIR(models::leap_hand, models::human_hand);
-extern TOPOGRASP_MATRIX_PAIR(models::shadow_hand, models::human_hand);
-extern TOPOGRASP_MATRIX_PAIR(models::shadow_hand, models::allegro_hand);
+extern TOPOGRASP_MATRIX_TARGET(models::schunk_sdh);
+extern TOPOGRASP_MATRIX_TARGET(models::barrett_bh8);
+extern TOPOGRASP_MATRIX_TARGET(models::allegro_hand);
+extern TOPOGRASP_MATRIX_TARGET(models::leap_hand);
+extern TOPOGRASP_MATRIX_TARGET(models::shadow_hand);
 
 }  // namespace matrix

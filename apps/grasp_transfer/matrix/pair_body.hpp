@@ -43,9 +43,9 @@ Record record(std::string pair, const std::string& object, const HandTransfer<M>
   return r;
 }
 
-template <const auto& T, const auto& S>
+template <const auto& T>
 std::vector<HandTransfer<T>> transfer_pair(const std::string& pair, const GraspObject& object,
-                                           const HandGrasp<S>& source,
+                                           const SourceGrasp& source,
                                            const std::vector<TransferMethod>& methods,
                                            const TransferOptions& options,
                                            std::vector<Record>& out) {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The transfer matrix: human -> SDH (pair.hpp).
+// The transfer matrix: every transfer to the SDH hand, from any source (pair.hpp).
 #include "pair_body.hpp"
 
 namespace matrix {
-TOPOGRASP_MATRIX_PAIR(models::schunk_sdh, models::human_hand);
+TOPOGRASP_MATRIX_TARGET(models::schunk_sdh);
 }  // namespace matrix

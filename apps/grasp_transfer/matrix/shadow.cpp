@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The transfer matrix: human -> Shadow and Allegro -> Shadow (pair.hpp).
+// The transfer matrix: every transfer to the Shadow hand, from any source (pair.hpp).
 #include "pair_body.hpp"
 
 namespace matrix {
-TOPOGRASP_MATRIX_PAIR(models::shadow_hand, models::human_hand);
-TOPOGRASP_MATRIX_PAIR(models::shadow_hand, models::allegro_hand);
+TOPOGRASP_MATRIX_TARGET(models::shadow_hand);
 }  // namespace matrix

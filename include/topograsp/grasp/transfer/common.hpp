@@ -18,6 +18,7 @@
 #include <topograsp/grasp/hand_grasp.hpp>
 #include <topograsp/grasp/human_grasps.hpp>
 #include <topograsp/grasp/transfer/options.hpp>
+#include <topograsp/grasp/transfer/source.hpp>
 
 namespace topograsp {
 
@@ -59,14 +60,6 @@ inline Contact nearest_surface(const Composite& shape, const Vec3& p) {
   if (!g.hand_pose.matrix().allFinite()) return "the human hand pose is not finite";
   if (!g.q.allFinite()) return "the human configuration is not finite";
   if (!g.descriptor.values.allFinite()) return "the human windings are not finite";
-  return {};
-}
-
-/// Why the source grasp \p g cannot be transferred (a non-finite pose or joints), or empty.
-template <const auto& S>
-[[nodiscard]] std::string unusable_source_grasp(const HandGrasp<S>& g) {
-  if (!g.root.matrix().allFinite()) return "the source hand pose is not finite";
-  if (!g.q.allFinite()) return "the source configuration is not finite";
   return {};
 }
 

@@ -9,9 +9,12 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
+#include <topograsp/core/assert.hpp>
 #include <topograsp/grasp/transfer/common.hpp>
 #include <topograsp/kinematics/least_squares.hpp>
 
@@ -22,35 +25,42 @@ namespace topograsp {
 /// error means the targets were out of the hand's reach, and the fit failed.
 inline constexpr double k_fingertip_max_error = 0.5;
 
-/// The finger correspondence of the fingertip mapping from hand \p Source to hand \p Target: for
-/// each finger of Target (its hand description's order), the finger of Source whose tip its tip is
-/// fitted to, or -1. The thumb goes to the thumb; Target's other fingers, the j-th of its n in
-/// order, to the floor(j m / n)-th of Source's m other fingers, each Source finger used once (a
-/// Target finger whose Source finger is already taken is left out of the fit and closes with the
-/// hand). From the human hand (index, middle, ring, little): the SDH's and the Barrett's two
-/// fingers get the index and the ring; the Allegro's and the LEAP hand's three the index, middle
-/// and ring; the Shadow hand's four their namesakes. The rule was stated before any run.
-template <const auto& Target, const auto& Source>
-  requires HandModel<decltype(Target)> && HandModel<decltype(Source)>
-[[nodiscard]] constexpr std::array<int, Target.fingers.size()> fingertip_correspondence() {
+/// The finger correspondence of the fingertip mapping to hand \p Target from a source hand of
+/// \p source_fingers fingers whose thumb is finger \p source_thumb: for each finger of Target
+/// (its hand description's order), the source finger whose tip its tip is fitted to, or -1. The
+/// thumb goes to the thumb; Target's other fingers, the j-th of its n in order, to the
+/// floor(j m / n)-th of the source's m other fingers, each source finger used once (a Target
+/// finger whose source finger is already taken is left out of the fit and closes with the hand).
+/// From the human hand (index, middle, ring, little): the SDH's and the Barrett's two fingers get
+/// the index and the ring; the Allegro's and the LEAP hand's three the index, middle and ring; the
+/// Shadow hand's four their namesakes. The rule was stated before any run. Requires at least two
+/// source fingers and a thumb among them (unusable_source refuses a source without).
+template <const auto& Target>
+  requires HandModel<decltype(Target)>
+[[nodiscard]] constexpr std::array<int, Target.fingers.size()> fingertip_correspondence(
+    int source_fingers, int source_thumb) {
   constexpr int n = static_cast<int>(Target.fingers.size()) - 1;
-  constexpr int m = static_cast<int>(Source.fingers.size()) - 1;
-  std::array<int, Source.fingers.size() - 1> source_other{};
-  for (int f = 0, k = 0; f <= m; ++f)
-    if (f != Source.thumb) source_other[static_cast<std::size_t>(k++)] = f;
+  const int m = source_fingers - 1;
   std::array<int, Target.fingers.size()> c{};
   int j = 0, last = -1;
   for (int f = 0; f <= n; ++f) {
     auto& to = c[static_cast<std::size_t>(f)];
     if (f == Target.thumb) {
-      to = Source.thumb;
+      to = source_thumb;
       continue;
     }
-    const int k = j++ * m / n;
-    to = k == last ? -1 : source_other[static_cast<std::size_t>(k)];
+    const int k = j++ * m / n;  // the k-th of the source's fingers other than its thumb
+    to = k == last ? -1 : (k < source_thumb ? k : k + 1);
     last = k;
   }
   return c;
+}
+
+/// fingertip_correspondence from hand \p Source to hand \p Target.
+template <const auto& Target, const auto& Source>
+  requires HandModel<decltype(Target)> && HandModel<decltype(Source)>
+[[nodiscard]] constexpr std::array<int, Target.fingers.size()> fingertip_correspondence() {
+  return fingertip_correspondence<Target>(static_cast<int>(Source.fingers.size()), Source.thumb);
 }
 
 /// How many fingertips the fingertip mapping from \p Source to \p Target fits: the thumb and
@@ -61,55 +71,17 @@ inline constexpr int fingertip_count =
 
 namespace detail {
 
-// The fitted pairs of the fingertip mapping (fingertip_correspondence): {Target finger, Source
-// finger}, the thumb first, then Target's fingers in order.
-template <const auto& Target, const auto& Source>
-constexpr std::array<std::pair<int, int>, fingertip_count<Target, Source>> fingertip_pairs() {
-  constexpr auto c = fingertip_correspondence<Target, Source>();
-  std::array<std::pair<int, int>, fingertip_count<Target, Source>> pairs{};
-  pairs[0] = {Target.thumb, Source.thumb};
-  std::size_t k = 1;
+// The fitted pairs of the fingertip mapping from source (fingertip_correspondence): {Target
+// finger, source finger}, the thumb first, then Target's fingers in order.
+template <const auto& Target>
+std::vector<std::pair<int, int>> fingertip_pairs(const SourceGrasp& source) {
+  const auto c =
+      fingertip_correspondence<Target>(static_cast<int>(source.digits.size()), source.thumb);
+  std::vector<std::pair<int, int>> pairs{{Target.thumb, source.thumb}};
   for (int f = 0; f < static_cast<int>(c.size()); ++f)
     if (f != Target.thumb && c[static_cast<std::size_t>(f)] >= 0)
-      pairs[k++] = {f, c[static_cast<std::size_t>(f)]};
+      pairs.emplace_back(f, c[static_cast<std::size_t>(f)]);
   return pairs;
-}
-
-// The first link on the path from M's root to finger f's tip that is on no other finger's path:
-// where the digit starts (the human's index_abd and thumb_cmc1, the SDH's knuckle and thumb_1).
-template <const auto& M>
-int digit_base(int f) {
-  const auto on_path = [](int link, int g) {
-    for (int l = finger_tip<M>(g).link; l >= 0; l = M.links[static_cast<std::size_t>(l)].parent)
-      if (l == link) return true;
-    return false;
-  };
-  int base = finger_tip<M>(f).link;
-  for (int l = base; l >= 0; l = M.links[static_cast<std::size_t>(l)].parent) {
-    for (int g = 0; g < static_cast<int>(M.fingers.size()); ++g)
-      if (g != f && on_path(l, g)) return base;
-    base = l;
-  }
-  return base;
-}
-
-// The length (m) of finger f of M held straight (q = 0): the distances between the link origins
-// from its digit_base out to its tip.
-template <const auto& M>
-double digit_length(int f) {
-  KinematicsData<M> d;
-  forward_kinematics(d, Vec<M.nq>::Zero());
-  const int first = digit_base<M>(f);
-  Vec3 p = world_point(d, finger_tip<M>(f));
-  int l = finger_tip<M>(f).link;
-  double length = 0.0;
-  for (;;) {
-    length += (p - d.p[static_cast<std::size_t>(l)]).norm();
-    if (l == first || l <= 0) break;
-    p = d.p[static_cast<std::size_t>(l)];
-    l = M.links[static_cast<std::size_t>(l)].parent;
-  }
-  return length;
 }
 
 // The radius (m) of finger f's tip: of the shapes of its tip's link, the one nearest the tip
@@ -149,43 +121,52 @@ Vec<FreeBase<M>::model.nq> free_at_grasp_frame(const Eigen::Isometry3d& T, const
 
 }  // namespace detail
 
-/// The size of hand \p Target over hand \p Source for the fingertip mapping: the summed lengths of
-/// the fitted digits held straight (fingertip_correspondence; a digit from the first link that
-/// moves it alone out to its tip). Human -> SDH: 0.5145 / 0.2366 = 2.175.
-template <const auto& Target, const auto& Source>
-[[nodiscard]] double fingertip_scale() {
-  double target = 0.0, source = 0.0;
-  for (const auto& [t, s] : detail::fingertip_pairs<Target, Source>()) {
+/// The size of hand \p Target over the source hand of \p source for the fingertip mapping: the
+/// summed lengths of the fitted digits held straight (fingertip_correspondence; a digit from the
+/// first link that moves it alone out to its tip). Human -> SDH: 0.5145 / 0.2366 = 2.175.
+template <const auto& Target>
+  requires HandModel<decltype(Target)>
+[[nodiscard]] double fingertip_scale(const SourceGrasp& source) {
+  double target = 0.0, from = 0.0;
+  for (const auto& [t, s] : detail::fingertip_pairs<Target>(source)) {
     target += detail::digit_length<Target>(t);
-    source += detail::digit_length<Source>(s);
+    from += source.digits[static_cast<std::size_t>(s)].length;
   }
-  return target / source;
+  return target / from;
+}
+
+/// fingertip_scale from hand \p Source to hand \p Target.
+template <const auto& Target, const auto& Source>
+  requires HandModel<decltype(Target)> && HandModel<decltype(Source)>
+[[nodiscard]] double fingertip_scale() {
+  return fingertip_scale<Target>(describe_source(HandGrasp<Source>{}));
 }
 
 /// The targets of the fingertip mapping (object frame), the thumb's first, then Target's fitted
-/// fingers in order (fingertip_correspondence): the tips of their Source fingers in \p source
-/// scaled about their centroid by options.fingertip_scale (0: fingertip_scale<Target, Source>()),
+/// fingers in order (fingertip_correspondence): the tips of their source fingers in \p source
+/// scaled about their centroid by options.fingertip_scale (0: fingertip_scale<Target>(source)),
 /// then each moved to the nearest point of the object's surface and out along its normal by the
 /// radius of Target's fingertip and options.sim.contact_gap, so that the fitted tips touch the
 /// object, not the air. A scaled tip farther than k_fingertip_max_error from the centroid (a scale
 /// far beyond any hand's, or one that overflows) is left where it is, for the fit to refuse.
-template <const auto& Target, const auto& Source>
-  requires HandModel<decltype(Target)> && HandModel<decltype(Source)>
-[[nodiscard]] std::array<Vec3, fingertip_count<Target, Source>> fingertip_targets(
-    const GraspObject& object, const HandGrasp<Source>& source,
-    const TransferOptions& options = {}) {
-  constexpr auto pairs = detail::fingertip_pairs<Target, Source>();
-  KinematicsData<Source> sd;
-  forward_kinematics(sd, source.q);
-  std::array<Vec3, pairs.size()> goal;
+/// \throws topograsp::invalid_argument naming "source" for a source that unusable_source refuses.
+template <const auto& Target>
+  requires HandModel<decltype(Target)>
+[[nodiscard]] std::vector<Vec3> fingertip_targets(const GraspObject& object,
+                                                  const SourceGrasp& source,
+                                                  const TransferOptions& options = {}) {
+  if (std::string unusable = unusable_source(source); !unusable.empty())
+    detail::throw_invalid_argument("source", unusable);
+  const auto pairs = detail::fingertip_pairs<Target>(source);
+  std::vector<Vec3> goal(pairs.size());
   Vec3 centroid = Vec3::Zero();
   for (std::size_t k = 0; k < pairs.size(); ++k) {
-    goal[k] = source.root * world_point(sd, finger_tip<Source>(pairs[k].second));
+    goal[k] = source.root * source.digits[static_cast<std::size_t>(pairs[k].second)].tip;
     centroid += goal[k];
   }
   centroid /= static_cast<double>(pairs.size());
   const double scale =
-      options.fingertip_scale > 0.0 ? options.fingertip_scale : fingertip_scale<Target, Source>();
+      options.fingertip_scale > 0.0 ? options.fingertip_scale : fingertip_scale<Target>(source);
   const Composite shape = object.composite();  // parts() views it: keep it alive
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     Vec3& p = goal[k];
@@ -198,40 +179,20 @@ template <const auto& Target, const auto& Source>
   return goal;
 }
 
-/// Fingertip mapping (Rohling and Hollerbach 1993) from any hand to any hand: Target's fingertips
-/// (fingertip_correspondence: the thumb to the thumb, the fingers spread over the source's) fitted
-/// to fingertip_targets, the source's tips scaled to Target's size and put on the object's
-/// surface. Target on its free base is fitted by damped least squares, within its joint limits,
-/// started at the transplant pose (its grasp frame at the source's, joints base_preshape) with a
-/// weak pull toward it (options.fingertip_prior); then opened until clear of the object
-/// (open_hand_until_clear), backed off along its approach only if it still overlaps, or moved on
-/// until contact (at most final_approach), closed until contact and judged (with \p second if
-/// set).
-///
-/// When the fit cannot be done the result is not planned (planned false, nothing simulated) and
-/// reason says why: a non-finite source grasp, a fit whose cost is not finite (fingertip targets so
-/// far apart that their squared errors overflow, e.g. fingertip_scale = 1e300), a fit whose
-/// fingertips end more than k_fingertip_max_error from their targets (targets out of the hand's
-/// reach, e.g. fingertip_scale = 1e10), or a fitted hand that HandScene cannot take. It never
-/// reports the transplant pose it starts from as a fingertip transfer.
-template <const auto& Target, const auto& Source>
-  requires HandModel<decltype(Target)> && HandModel<decltype(Source)>
-[[nodiscard]] HandTransfer<Target> fingertip_grasp(const GraspObject& object,
-                                                   const HandGrasp<Source>& source,
-                                                   const TransferOptions& options = {},
-                                                   const SecondJudge<Target>& second = {}) {
-  detail::TransferRun<Target> run(TransferMethod::fingertip, detail::unusable_source_grasp(source),
-                                  options);
-  if (run.refused()) return run.unplanned();
+namespace detail {
+
+// The fingertip fit of fingertip_grasp with its N fitted pairs known at compile time (the fit's
+// matrices are fixed-size): Target's fingertips pairs[k].first fitted to goal[k].
+template <const auto& Target, int N>
+HandTransfer<Target> fingertip_fit(TransferRun<Target>& run, const GraspObject& object,
+                                   const SourceGrasp& source,
+                                   const std::vector<std::pair<int, int>>& pairs,
+                                   const std::vector<Vec3>& goal, double scale,
+                                   const TransferOptions& options,
+                                   const SecondJudge<Target>& second) {
   constexpr auto& F = FreeBase<Target>::model;
-  constexpr auto pairs = detail::fingertip_pairs<Target, Source>();
-  constexpr int n = static_cast<int>(pairs.size());
-  constexpr int rows = 3 * n + F.nq;
-  const auto goal = fingertip_targets<Target>(object, source, options);
-  const double scale =
-      options.fingertip_scale > 0.0 ? options.fingertip_scale : fingertip_scale<Target, Source>();
-  Vec<F.nq> q =
-      detail::free_at_grasp_frame<Target>(grasp_frame(source), base_preshape<Target>(options));
+  constexpr int rows = 3 * N + F.nq;
+  Vec<F.nq> q = free_at_grasp_frame<Target>(source.grasp_frame, base_preshape<Target>(options));
   const Vec<F.nq> lo = lower_limits<F>(), hi = upper_limits<F>();
   // Residual: the tip errors (m), then a weak pull toward the transplant pose and the pre-shape
   // (weight options.fingertip_prior per m or rad), which keeps the under-determined fit (more
@@ -242,7 +203,7 @@ template <const auto& Target, const auto& Source>
   const auto tip = [&](int k) { return finger_tip<F>(pairs[static_cast<std::size_t>(k)].first); };
   const auto residual = [&](const Vec<F.nq>& x, Vec<rows>& e) {
     forward_kinematics(d, x);
-    for (int k = 0; k < n; ++k)
+    for (int k = 0; k < N; ++k)
       e.template segment<3>(3 * k) = world_point(d, tip(k)) - goal[static_cast<std::size_t>(k)];
     e.template tail<F.nq>() = w * (x - q_ref);
     return e.squaredNorm();
@@ -265,7 +226,7 @@ template <const auto& Target, const auto& Source>
   const BoundedLeastSquaresResult fit = bounded_least_squares(
       q, e, cost, lo, hi, residual,
       [&](Mat<rows, F.nq>& Jt) {
-        for (int k = 0; k < n; ++k)
+        for (int k = 0; k < N; ++k)
           Jt.template middleRows<3>(3 * k) = point_jacobian(d, tip(k).link, world_point(d, tip(k)));
       },
       J, lm);
@@ -274,7 +235,7 @@ template <const auto& Target, const auto& Source>
         "the fingertip fit accepted no step (the hand would stay at the transplant pose)");
   forward_kinematics(d, q);
   double tip_error = 0.0;
-  for (int k = 0; k < n; ++k)
+  for (int k = 0; k < N; ++k)
     tip_error =
         std::max(tip_error, (world_point(d, tip(k)) - goal[static_cast<std::size_t>(k)]).norm());
   if (!(tip_error <= k_fingertip_max_error)) {
@@ -290,6 +251,49 @@ template <const auto& Target, const auto& Source>
   if (std::string unusable = unusable_hand_pose<Target>(fitted, q_hand); !unusable.empty())
     return run.unplanned("fitted: " + unusable);
   return run.open_place_and_judge(object, fitted, q_hand, options, second);
+}
+
+}  // namespace detail
+
+/// Fingertip mapping (Rohling and Hollerbach 1993) from any hand to any hand: Target's fingertips
+/// (fingertip_correspondence: the thumb to the thumb, the fingers spread over the source's) fitted
+/// to fingertip_targets, the source's tips scaled to Target's size and put on the object's
+/// surface. Target on its free base is fitted by damped least squares, within its joint limits,
+/// started at the transplant pose (its grasp frame at the source's, joints base_preshape) with a
+/// weak pull toward it (options.fingertip_prior); then opened until clear of the object
+/// (open_hand_until_clear), backed off along its approach only if it still overlaps, or moved on
+/// until contact (at most final_approach), closed until contact and judged (with \p second if
+/// set).
+///
+/// When the fit cannot be done the result is not planned (planned false, nothing simulated) and
+/// reason says why: a source that unusable_source refuses, a fit whose cost is not finite
+/// (fingertip targets so far apart that their squared errors overflow, e.g. fingertip_scale =
+/// 1e300), a fit whose fingertips end more than k_fingertip_max_error from their targets (targets
+/// out of the hand's reach, e.g. fingertip_scale = 1e10), or a fitted hand that HandScene cannot
+/// take. It never reports the transplant pose it starts from as a fingertip transfer.
+template <const auto& Target>
+  requires HandModel<decltype(Target)>
+[[nodiscard]] HandTransfer<Target> fingertip_grasp(const GraspObject& object,
+                                                   const SourceGrasp& source,
+                                                   const TransferOptions& options = {},
+                                                   const SecondJudge<Target>& second = {}) {
+  detail::TransferRun<Target> run(TransferMethod::fingertip, unusable_source(source), options);
+  if (run.refused()) return run.unplanned();
+  const auto pairs = detail::fingertip_pairs<Target>(source);
+  const auto goal = fingertip_targets<Target>(object, source, options);
+  const double scale =
+      options.fingertip_scale > 0.0 ? options.fingertip_scale : fingertip_scale<Target>(source);
+  // The fit, for its number of pairs: 2 (the thumb and one finger) to Target's finger count.
+  std::optional<HandTransfer<Target>> r;
+  [&]<int... K>(std::integer_sequence<int, K...>) {
+    (void)((pairs.size() == K + 2 &&
+            (r.emplace(detail::fingertip_fit<Target, K + 2>(run, object, source, pairs, goal, scale,
+                                                            options, second)),
+             true)) ||
+           ...);
+  }(std::make_integer_sequence<int, static_cast<int>(Target.fingers.size()) - 1>{});
+  TOPOGRASP_ASSERT(r.has_value(), "a usable source gives 2 to Target.fingers.size() pairs");
+  return std::move(*r);
 }
 
 }  // namespace topograsp

@@ -28,11 +28,11 @@ namespace topograsp {
 
 namespace detail {
 
-// The baseline method (one that is not is_topological) from hand Source to hand Target: the one
+// The baseline method (one that is not is_topological) from source to hand Target: the one
 // dispatch of transfer_hand() and transfer(). Throws naming "method" for a topological method.
-template <const auto& Target, const auto& Source>
+template <const auto& Target>
 HandTransfer<Target> baseline_grasp(TransferMethod method, const GraspObject& object,
-                                    const HandGrasp<Source>& source, const TransferOptions& options,
+                                    const SourceGrasp& source, const TransferOptions& options,
                                     const SecondJudge<Target>& second) {
   switch (method) {
     case TransferMethod::autoclose:
@@ -48,22 +48,22 @@ HandTransfer<Target> baseline_grasp(TransferMethod method, const GraspObject& ob
   }
 }
 
-// The topological method (or a variant) from source, a grasp of hand Source, to hand Target on
+// The topological method (or a variant) from source, a grasp of any hand, to hand Target on
 // the arm (on_arm) or its free base: the source's windings around the winding reference become
 // Target's targets (winding_targets), then topological_on_arm or topological_free. A source that
 // is not finite is refused.
-template <const auto& Target, bool on_arm, const auto& Source>
+template <const auto& Target, bool on_arm>
 HandTransfer<Target> topological_from_source(TransferMethod method, const GraspObject& object,
-                                             const HandGrasp<Source>& source,
+                                             const SourceGrasp& source,
                                              const TransferOptions& options,
                                              const SecondJudge<Target>& second) {
-  TransferRun<Target> run(method, unusable_source_grasp(source), options);
+  TransferRun<Target> run(method, unusable_source(source), options);
   if (run.refused()) return run.unplanned();
-  const Eigen::Isometry3d meet = grasp_frame(source);
+  const Eigen::Isometry3d& meet = source.grasp_frame;
   const Vec3 reference =
       winding_reference_point(object, meet.translation(), options.winding_reference);
-  const Vec<hand_curve_count<Target>> y = winding_targets<hand_curve_count<Target>>(
-      hand_windings<Source>(reference, source.root, source.q));
+  const Vec<hand_curve_count<Target>> y =
+      winding_targets<hand_curve_count<Target>>(source_windings(source, reference));
   if constexpr (on_arm)
     return topological_on_arm<Target>(object, meet, y, reference, options, second, run);
   else
@@ -72,8 +72,9 @@ HandTransfer<Target> topological_from_source(TransferMethod method, const GraspO
 
 }  // namespace detail
 
-/// Transfers \p source, a grasp of hand \p Source on \p object, to hand \p Target on a free
-/// base, by \p method:
+/// Transfers \p source, a grasp of any hand on \p object (a SourceGrasp; a HandGrasp of any hand
+/// model converts to one: describe_source), to hand \p Target on a free base, by \p method. It
+/// compiles once per target hand, whatever the source:
 /// - autoclose (autoclose_grasp, the paper's baseline): Target's palm frame at the source's
 ///   (palm_frame), its joints at base_preshape, backed off along its approach only as far as
 ///   needed to clear the object, closed until contact;
@@ -94,16 +95,17 @@ HandTransfer<Target> topological_from_source(TransferMethod method, const GraspO
 ///   approach until contact (at most final_approach), closes until contact and is judged.
 /// Every result is judged by the stability suite in the built-in stepper and by \p second if set.
 ///
-/// A source grasp that is not finite, or a hand that cannot be placed clear of the object, gives
-/// an unplanned result (planned false) whose reason says why; a plan that makes no progress is
-/// judged at its start, and its reason says so.
+/// A source grasp that unusable_source refuses (not finite, fewer than two fingers, no curve), or
+/// a hand that cannot be placed clear of the object, gives an unplanned result (planned false)
+/// whose reason says why; a plan that makes no progress is judged at its start, and its reason says
+/// so.
 /// \throws topograsp::invalid_argument naming "method" for closed_windings (on the arm only:
 /// transfer_hand_on_arm, transfer()) and shuffled_windings (transfer_shuffled()), and as
 /// validate_transfer_parameters for options out of range.
-template <const auto& Target, const auto& Source>
-  requires HandModel<decltype(Target)> && HandModel<decltype(Source)>
+template <const auto& Target>
+  requires HandModel<decltype(Target)>
 [[nodiscard]] HandTransfer<Target> transfer_hand(TransferMethod method, const GraspObject& object,
-                                                 const HandGrasp<Source>& source,
+                                                 const SourceGrasp& source,
                                                  const TransferOptions& given = {},
                                                  const SecondJudge<Target>& second = {}) {
   if (!any_hand_method(method))
@@ -119,9 +121,9 @@ template <const auto& Target, const auto& Source>
   return detail::topological_from_source<Target, false>(method, object, source, options, second);
 }
 
-/// Transfers \p source, a grasp of hand \p Source on \p object, to hand \p Target on the Schunk
-/// arm (OnArm<Target>: the hand's root at the flange), by the topological method or one of its
-/// variants (closed_windings included): the paper's planner for any hand. The source's windings
+/// Transfers \p source, a grasp of any hand on \p object (SourceGrasp), to hand \p Target on the
+/// Schunk arm (OnArm<Target>: the hand's root at the flange), by the topological method or one of
+/// its variants (closed_windings included): the paper's planner for any hand. The source's windings
 /// around the winding reference become Target's winding targets (winding_targets); the object is
 /// placed so that the source's grasp frame maps onto Target's at the arm's ready pose
 /// (options.arm_ready, base_preshape) pushed out by options.backoff (in the arm setting,
@@ -134,11 +136,11 @@ template <const auto& Target, const auto& Source>
 /// whose reason says why. \throws topograsp::invalid_argument naming "method" for the baselines
 /// (autoclose, transplant, fingertip, virtual_finger: they place the hand without an arm,
 /// transfer_hand), and as validate_transfer_parameters for options out of range.
-template <const auto& Target, const auto& Source>
-  requires HandModel<decltype(Target)> && HandModel<decltype(Source)>
+template <const auto& Target>
+  requires HandModel<decltype(Target)>
 [[nodiscard]] HandTransfer<Target> transfer_hand_on_arm(TransferMethod method,
                                                         const GraspObject& object,
-                                                        const HandGrasp<Source>& source,
+                                                        const SourceGrasp& source,
                                                         const TransferOptions& given = {},
                                                         const SecondJudge<Target>& second = {}) {
   if (!is_topological(method))

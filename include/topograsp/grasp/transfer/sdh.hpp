@@ -13,6 +13,7 @@
 #include <array>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <topograsp/grasp/transfer/fingertip.hpp>
 #include <topograsp/grasp/transfer/hand.hpp>
@@ -101,10 +102,13 @@ template <class = void>
 }
 
 /// The fingertip targets of transfer_fingertip (fingertip_targets), the SDH's thumb tip's first.
+/// \throws topograsp::invalid_argument naming "source" for a human grasp that is not finite.
 template <class = void>
 [[nodiscard]] std::array<Vec3, 3> fingertip_targets(const GraspObject& object, const HumanGrasp& g,
                                                     const TransferOptions& options = {}) {
-  return fingertip_targets<models::schunk_sdh>(object, source_grasp(g), options);
+  const std::vector<Vec3> t =
+      fingertip_targets<models::schunk_sdh>(object, source_grasp(g), options);
+  return {t[0], t[1], t[2]};
 }
 
 /// The virtual-finger mapping of Table I: the human grasp \p g to the SDH (virtual_finger_grasp:

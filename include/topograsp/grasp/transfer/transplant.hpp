@@ -17,16 +17,15 @@ namespace topograsp {
 /// set). Unlike the other methods it is not moved on until contact when it is clear: a baseline is
 /// not given a help that weakens it (docs/results.md measures it). Not planned (reason says why)
 /// for a source that is not finite or a hand that cannot be placed clear of the object.
-template <const auto& Target, const auto& Source>
-  requires HandModel<decltype(Target)> && HandModel<decltype(Source)>
+template <const auto& Target>
+  requires HandModel<decltype(Target)>
 [[nodiscard]] HandTransfer<Target> transplant_grasp(const GraspObject& object,
-                                                    const HandGrasp<Source>& source,
+                                                    const SourceGrasp& source,
                                                     const TransferOptions& options = {},
                                                     const SecondJudge<Target>& second = {}) {
-  detail::TransferRun<Target> run(TransferMethod::transplant, detail::unusable_source_grasp(source),
-                                  options);
+  detail::TransferRun<Target> run(TransferMethod::transplant, unusable_source(source), options);
   if (run.refused()) return run.unplanned();
-  const Eigen::Isometry3d target = grasp_frame(source);
+  const Eigen::Isometry3d target = source.grasp_frame;
   const Vec<Target.nq> preshape =
       opened_preshape<Target>(options.transplant_opening, base_preshape<Target>(options));
   return run.place_and_judge(object, root_for_grasp_frame<Target>(target, preshape), preshape,
@@ -41,16 +40,15 @@ template <const auto& Target, const auto& Source>
 /// fingertip's distance from the palm beyond options.sim.standoff), then closed until contact and
 /// judged (with \p second if set). Not planned (reason says why) for a source that is not finite
 /// or a hand that cannot be placed clear of the object.
-template <const auto& Target, const auto& Source>
-  requires HandModel<decltype(Target)> && HandModel<decltype(Source)>
+template <const auto& Target>
+  requires HandModel<decltype(Target)>
 [[nodiscard]] HandTransfer<Target> autoclose_grasp(const GraspObject& object,
-                                                   const HandGrasp<Source>& source,
+                                                   const SourceGrasp& source,
                                                    const TransferOptions& options = {},
                                                    const SecondJudge<Target>& second = {}) {
-  detail::TransferRun<Target> run(TransferMethod::autoclose, detail::unusable_source_grasp(source),
-                                  options);
+  detail::TransferRun<Target> run(TransferMethod::autoclose, unusable_source(source), options);
   if (run.refused()) return run.unplanned();
-  const Eigen::Isometry3d target = palm_frame(source);
+  const Eigen::Isometry3d target = source.palm_frame;
   const Vec<Target.nq> preshape = base_preshape<Target>(options);
   // A palm where the source's was can put the fingers their whole length into the object: the
   // search for a clear start backs off that much further than sim.standoff.

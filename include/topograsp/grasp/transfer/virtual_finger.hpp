@@ -16,16 +16,24 @@ namespace topograsp {
 
 namespace detail {
 
-// Hand M's opposition at kinematics d mapped by T: its thumb tip (the first virtual finger) and
-// the centroid of its other fingertips (the second).
+// Hand M's opposition at kinematics d (its root frame): its thumb tip (the first virtual finger)
+// and the centroid of its other fingertips (the second).
 template <const auto& M>
-std::pair<Vec3, Vec3> opposition(const KinematicsData<M>& d,
-                                 const Eigen::Isometry3d& T = Eigen::Isometry3d::Identity()) {
+std::pair<Vec3, Vec3> opposition(const KinematicsData<M>& d) {
   Vec3 fingers = Vec3::Zero();
   for (int f = 0; f < static_cast<int>(M.fingers.size()); ++f)
-    if (f != M.thumb) fingers += T * world_point(d, finger_tip<M>(f));
+    if (f != M.thumb) fingers += world_point(d, finger_tip<M>(f));
   fingers /= static_cast<double>(M.fingers.size() - 1);
-  return {T * world_point(d, finger_tip<M>(M.thumb)), fingers};
+  return {world_point(d, finger_tip<M>(M.thumb)), fingers};
+}
+
+// The source's opposition (object frame): its thumb tip and the centroid of its other fingertips.
+inline std::pair<Vec3, Vec3> opposition(const SourceGrasp& s) {
+  Vec3 fingers = Vec3::Zero();
+  for (std::size_t f = 0; f < s.digits.size(); ++f)
+    if (static_cast<int>(f) != s.thumb) fingers += s.root * s.digits[f].tip;
+  fingers /= static_cast<double>(s.digits.size() - 1);
+  return {s.root * s.digits[static_cast<std::size_t>(s.thumb)].tip, fingers};
 }
 
 // The length (m) of the object's chord along the line c + s u (u unit): the inside interval of
@@ -74,30 +82,26 @@ inline constexpr int k_virtual_finger_openings = 151;
 /// Not planned (planned false, reason says why) for a non-finite source grasp, a pad opposition
 /// shorter than 1 mm or along the source's approach (no axis to turn the hand by), or a hand that
 /// cannot be placed clear of the object.
-template <const auto& Target, const auto& Source>
-  requires HandModel<decltype(Target)> && HandModel<decltype(Source)>
+template <const auto& Target>
+  requires HandModel<decltype(Target)>
 [[nodiscard]] HandTransfer<Target> virtual_finger_grasp(const GraspObject& object,
-                                                        const HandGrasp<Source>& source,
+                                                        const SourceGrasp& source,
                                                         const TransferOptions& options = {},
                                                         const SecondJudge<Target>& second = {}) {
-  detail::TransferRun<Target> run(TransferMethod::virtual_finger,
-                                  detail::unusable_source_grasp(source), options);
+  detail::TransferRun<Target> run(TransferMethod::virtual_finger, unusable_source(source), options);
   if (run.refused()) return run.unplanned();
-  KinematicsData<Source> sd;
-  forward_kinematics(sd, source.q);
-  const auto [thumb_s, fingers_s] = detail::opposition<Source>(sd, source.root);
+  const auto [thumb_s, fingers_s] = detail::opposition(source);
   const Composite shape = object.composite();  // parts() views it: keep it alive
   // Palm opposition when the palm touches the object (within the approach's contact gap and the
   // stability suite's touch distance), pad opposition when only the digits do.
   const Composite in_hand = object.composite(source.root.inverse());
   double palm_distance = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < Source.n_shapes; ++k)
-    if (Source.shapes[k].link == Source.palm.link)
-      for (const Primitive& part : in_hand.parts())
-        palm_distance = std::min(palm_distance, signed_distance(world_shape(sd, k), part).distance);
+  for (const Primitive& palm : source.palm)
+    for (const Primitive& part : in_hand.parts())
+      palm_distance = std::min(palm_distance, signed_distance(palm, part).distance);
   const bool pad =
       !(palm_distance <= options.sim.contact_gap + options.sim.stability.touch_distance);
-  const Eigen::Isometry3d target = grasp_frame(source);
+  const Eigen::Isometry3d target = source.grasp_frame;
   const Vec3 approach = target.linear().col(2);
   const Vec3 opposition = pad ? Vec3(fingers_s - thumb_s) : Vec3(target.linear().col(0));
   const double aperture =
