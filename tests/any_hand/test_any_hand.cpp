@@ -236,6 +236,15 @@ TEST_CASE("SDH -> Allegro: a robot grasp is a source; two SDH curves give three 
   INFO(f.reason);
   CHECK(f.planned);
   CHECK(f.method == TransferMethod::fingertip);
+  // The fewest pairs a source can give: a thumb and one finger (the human's index and thumb).
+  const SourceGrasp human = describe_source(g);
+  SourceGrasp pinch = human;
+  pinch.digits = {human.digits[0], human.digits[static_cast<std::size_t>(human.thumb)]};
+  pinch.thumb = 1;
+  REQUIRE(detail::fingertip_pairs<models::allegro_hand>(pinch).size() == 2);
+  const auto p = transfer_hand<models::allegro_hand>(TransferMethod::fingertip, bottle, pinch);
+  INFO(p.reason);
+  CHECK(p.planned);
 }
 
 TEST_CASE(
@@ -264,8 +273,25 @@ TEST_CASE(
     const Eigen::VectorXd v = hand_windings<H>(p, hand.root, hand.q);
     CHECK(w == v);
   }
-  // The digit lengths give the size ratio of the hand models.
-  CHECK(fingertip_scale<models::schunk_sdh>(s) == fingertip_scale<models::schunk_sdh, H>());
+  // The fingertips, digit lengths and palm shapes are the model's, to the last bit.
+  KinematicsData<H> d;
+  forward_kinematics(d, hand.q);
+  for (int f = 0; f < static_cast<int>(H.fingers.size()); ++f) {
+    const SourceDigit& digit = s.digits[static_cast<std::size_t>(f)];
+    CHECK(digit.tip == world_point(d, finger_tip<H>(f)));
+    CHECK(digit.length == detail::digit_length<H>(f));
+  }
+  std::size_t palm = 0;
+  for (std::size_t k = 0; k < H.n_shapes; ++k) {
+    if (H.shapes[k].link != H.palm.link) continue;
+    REQUIRE(palm < s.palm.size());
+    const Primitive model = world_shape(d, k);
+    CHECK(s.palm[palm].R == model.R);
+    CHECK(s.palm[palm].p == model.p);
+    CHECK(s.palm[palm].size == model.size);
+    ++palm;
+  }
+  CHECK(palm == s.palm.size());
   // A copy made field by field (as a reader of a file would make it) transfers as the grasp does.
   SourceGrasp copy;
   copy.hand = "a demonstrator this program does not know";
@@ -306,12 +332,19 @@ TEST_CASE("a source that is not a usable hand is refused by every method with th
        "a curve of the source hand is not finite"},
       {[](SourceGrasp& s) { s.grasp_frame.translation().y() = nan; },
        "the source hand pose is not finite"},
-      {[](SourceGrasp& s) { s.digits[2].length = 0.0; },
-       "a fingertip or digit length of the source hand is not finite and positive"},
+      {[](SourceGrasp& s) { s.thumb = -1; }, "the source hand's thumb is not one of its fingers"},
+      {[](SourceGrasp& s) { s.grasp_frame.linear() *= 2.0; },
+       "a frame of the source hand is not a rigid transform"},
+      {[](SourceGrasp& s) { s.digits[2].length = -0.01; },
+       "a fingertip or digit length of the source hand is not finite, or a length below 0"},
+      {[](SourceGrasp& s) { s.digits[1].length = nan; },
+       "a fingertip or digit length of the source hand is not finite, or a length below 0"},
       {[](SourceGrasp& s) { s.digits[0].tip.z() = nan; },
-       "a fingertip or digit length of the source hand is not finite and positive"},
+       "a fingertip or digit length of the source hand is not finite, or a length below 0"},
       {[](SourceGrasp& s) { s.palm[0].p.x() = nan; },
-       "a palm shape of the source hand is not finite"},
+       "a palm shape of the source hand is not finite, or has a size below 0"},
+      {[](SourceGrasp& s) { s.palm[0].size.x() = -0.01; },
+       "a palm shape of the source hand is not finite, or has a size below 0"},
   };
   for (const auto& [spoil, reason] : cases) {
     SourceGrasp bad = good;
@@ -327,7 +360,23 @@ TEST_CASE("a source that is not a usable hand is refused by every method with th
     }
     CHECK_THROWS_WITH(fingertip_targets<models::allegro_hand>(bottle, bad),
                       std::string("source: ") + reason);
+    CHECK_THROWS_WITH(fingertip_scale<models::allegro_hand>(bad), std::string("source: ") + reason);
   }
+  CHECK(unusable_source(SourceGrasp{}) == "the source hand has fewer than two fingers");
+  // Digits without length: every method but the fingertip mapping, which has no scale.
+  SourceGrasp flat = good;
+  for (SourceDigit& digit : flat.digits) digit.length = 0.0;
+  CHECK(unusable_source(flat).empty());
+  const auto no_scale =
+      transfer_hand<models::allegro_hand>(TransferMethod::fingertip, bottle, flat);
+  CHECK_FALSE(no_scale.planned);
+  CHECK(no_scale.reason == "the source's fitted digits have no length (no fingertip scale)");
+  CHECK(transfer_hand<models::allegro_hand>(TransferMethod::transplant, bottle, flat).planned);
+  // The SDH's Table I fingertip targets of a human grasp that is not finite.
+  HumanGrasp spoiled = g;
+  spoiled.q[0] = nan;
+  CHECK_THROWS_WITH(fingertip_targets(bottle, spoiled),
+                    "source: the source configuration is not finite");
   // A grasp that is not finite: describe_source records why and takes nothing else.
   HandGrasp<models::human_hand> hand = source_grasp(g);
   hand.q[5] = nan;
@@ -335,6 +384,9 @@ TEST_CASE("a source that is not a usable hand is refused by every method with th
   CHECK(unusable.unusable == "the source configuration is not finite");
   CHECK(unusable.curves.empty());
   CHECK(unusable_source(unusable) == "the source configuration is not finite");
+  hand = source_grasp(g);
+  hand.root.translation().z() = std::numeric_limits<double>::infinity();
+  CHECK(unusable_source(describe_source(hand)) == "the source hand pose is not finite");
 }
 
 TEST_CASE("the fingertip correspondence: thumb to thumb, the fingers spread, each used once",
@@ -358,6 +410,13 @@ TEST_CASE("the fingertip correspondence: thumb to thumb, the fingers spread, eac
   STATIC_REQUIRE(fingertip_correspondence<models::shadow_hand, models::allegro_hand>() ==
                  A5{0, -1, 1, 2, 3});
   STATIC_REQUIRE(fingertip_count<models::allegro_hand, models::schunk_sdh> == 3);
+  // A source whose thumb is not its last finger: the others are counted around it.
+  STATIC_REQUIRE(fingertip_correspondence<models::allegro_hand>(5, 0) == A4{1, 2, 3, 0});
+  STATIC_REQUIRE(fingertip_correspondence<models::allegro_hand>(5, 2) == A4{0, 1, 3, 2});
+  CHECK_THROWS_WITH(fingertip_correspondence<models::allegro_hand>(1, 0),
+                    Catch::StartsWith("source_fingers: "));
+  CHECK_THROWS_WITH(fingertip_correspondence<models::allegro_hand>(5, 5),
+                    Catch::StartsWith("source_thumb: "));
   // The SDH/human size ratio of Table I (digits from their first own link out to the tip).
   CHECK(fingertip_scale<models::schunk_sdh, models::human_hand>() == Approx(2.175).epsilon(2e-3));
   CHECK(fingertip_scale<models::human_hand, models::schunk_sdh>() ==

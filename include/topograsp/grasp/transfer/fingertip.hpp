@@ -14,7 +14,6 @@
 #include <utility>
 #include <vector>
 
-#include <topograsp/core/assert.hpp>
 #include <topograsp/grasp/transfer/common.hpp>
 #include <topograsp/kinematics/least_squares.hpp>
 
@@ -33,12 +32,17 @@ inline constexpr double k_fingertip_max_error = 0.5;
 /// finger whose source finger is already taken is left out of the fit and closes with the hand).
 /// From the human hand (index, middle, ring, little): the SDH's and the Barrett's two fingers get
 /// the index and the ring; the Allegro's and the LEAP hand's three the index, middle and ring; the
-/// Shadow hand's four their namesakes. The rule was stated before any run. Requires at least two
-/// source fingers and a thumb among them (unusable_source refuses a source without).
+/// Shadow hand's four their namesakes. The rule was stated before any run.
+/// \throws topograsp::invalid_argument naming "source_fingers" for fewer than two source fingers,
+/// "source_thumb" for a thumb that is not one of them.
 template <const auto& Target>
   requires HandModel<decltype(Target)>
 [[nodiscard]] constexpr std::array<int, Target.fingers.size()> fingertip_correspondence(
     int source_fingers, int source_thumb) {
+  if (source_fingers < 2)
+    detail::throw_invalid_argument("source_fingers", "expected at least 2 (a thumb and a finger)");
+  if (source_thumb < 0 || source_thumb >= source_fingers)
+    detail::throw_invalid_argument("source_thumb", "expected one of the source's fingers");
   constexpr int n = static_cast<int>(Target.fingers.size()) - 1;
   const int m = source_fingers - 1;
   std::array<int, Target.fingers.size()> c{};
@@ -123,10 +127,14 @@ Vec<FreeBase<M>::model.nq> free_at_grasp_frame(const Eigen::Isometry3d& T, const
 
 /// The size of hand \p Target over the source hand of \p source for the fingertip mapping: the
 /// summed lengths of the fitted digits held straight (fingertip_correspondence; a digit from the
-/// first link that moves it alone out to its tip). Human -> SDH: 0.5145 / 0.2366 = 2.175.
+/// first link that moves it alone out to its tip). Human -> SDH: 0.5145 / 0.2366 = 2.175; infinite
+/// if the source's fitted digits have no length.
+/// \throws topograsp::invalid_argument naming "source" for a source that unusable_source refuses.
 template <const auto& Target>
   requires HandModel<decltype(Target)>
 [[nodiscard]] double fingertip_scale(const SourceGrasp& source) {
+  if (std::string unusable = unusable_source(source); !unusable.empty())
+    detail::throw_invalid_argument("source", unusable);
   double target = 0.0, from = 0.0;
   for (const auto& [t, s] : detail::fingertip_pairs<Target>(source)) {
     target += detail::digit_length<Target>(t);
@@ -266,7 +274,8 @@ HandTransfer<Target> fingertip_fit(TransferRun<Target>& run, const GraspObject& 
 /// set).
 ///
 /// When the fit cannot be done the result is not planned (planned false, nothing simulated) and
-/// reason says why: a source that unusable_source refuses, a fit whose cost is not finite
+/// reason says why: a source that unusable_source refuses, a source whose fitted digits have no
+/// length, a fit whose cost is not finite
 /// (fingertip targets so far apart that their squared errors overflow, e.g. fingertip_scale =
 /// 1e300), a fit whose fingertips end more than k_fingertip_max_error from their targets (targets
 /// out of the hand's reach, e.g. fingertip_scale = 1e10), or a fitted hand that HandScene cannot
@@ -280,9 +289,11 @@ template <const auto& Target>
   detail::TransferRun<Target> run(TransferMethod::fingertip, unusable_source(source), options);
   if (run.refused()) return run.unplanned();
   const auto pairs = detail::fingertip_pairs<Target>(source);
-  const auto goal = fingertip_targets<Target>(object, source, options);
   const double scale =
       options.fingertip_scale > 0.0 ? options.fingertip_scale : fingertip_scale<Target>(source);
+  if (!std::isfinite(scale))
+    return run.unplanned("the source's fitted digits have no length (no fingertip scale)");
+  const auto goal = fingertip_targets<Target>(object, source, options);
   // The fit, for its number of pairs: 2 (the thumb and one finger) to Target's finger count.
   std::optional<HandTransfer<Target>> r;
   [&]<int... K>(std::integer_sequence<int, K...>) {
@@ -292,7 +303,7 @@ template <const auto& Target>
              true)) ||
            ...);
   }(std::make_integer_sequence<int, static_cast<int>(Target.fingers.size()) - 1>{});
-  TOPOGRASP_ASSERT(r.has_value(), "a usable source gives 2 to Target.fingers.size() pairs");
+  if (!r) return run.unplanned("the source gives no fingertip pairs to fit");  // unreachable
   return std::move(*r);
 }
 

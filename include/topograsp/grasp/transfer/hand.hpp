@@ -51,7 +51,7 @@ HandTransfer<Target> baseline_grasp(TransferMethod method, const GraspObject& ob
 // The topological method (or a variant) from source, a grasp of any hand, to hand Target on
 // the arm (on_arm) or its free base: the source's windings around the winding reference become
 // Target's targets (winding_targets), then topological_on_arm or topological_free. A source that
-// is not finite is refused.
+// unusable_source refuses is refused.
 template <const auto& Target, bool on_arm>
 HandTransfer<Target> topological_from_source(TransferMethod method, const GraspObject& object,
                                              const SourceGrasp& source,
@@ -132,9 +132,9 @@ template <const auto& Target>
 /// hand with the tasks of transfer_topological; the final hand, without the arm, moves on until
 /// contact (at most final_approach), closes and is judged (with \p second if set).
 ///
-/// A source grasp that is not finite or a plan that cannot be placed gives an unplanned result
-/// whose reason says why. \throws topograsp::invalid_argument naming "method" for the baselines
-/// (autoclose, transplant, fingertip, virtual_finger: they place the hand without an arm,
+/// A source grasp that unusable_source refuses or a plan that cannot be placed gives an unplanned
+/// result whose reason says why. \throws topograsp::invalid_argument naming "method" for the
+/// baselines (autoclose, transplant, fingertip, virtual_finger: they place the hand without an arm,
 /// transfer_hand), and as validate_transfer_parameters for options out of range.
 template <const auto& Target>
   requires HandModel<decltype(Target)>

@@ -102,7 +102,8 @@ template <class = void>
 }
 
 /// The fingertip targets of transfer_fingertip (fingertip_targets), the SDH's thumb tip's first.
-/// \throws topograsp::invalid_argument naming "source" for a human grasp that is not finite.
+/// \throws topograsp::invalid_argument naming "source" for a human grasp whose pose or joints are
+/// not finite.
 template <class = void>
 [[nodiscard]] std::array<Vec3, 3> fingertip_targets(const GraspObject& object, const HumanGrasp& g,
                                                     const TransferOptions& options = {}) {

@@ -96,8 +96,6 @@ std::string unusable_source_grasp(const HandGrasp<S>& g) {
   return {};
 }
 
-inline bool finite_pose(const Eigen::Isometry3d& T) { return T.matrix().allFinite(); }
-
 }  // namespace detail
 
 /// The grasp \p g of hand \p S as a SourceGrasp: its root pose, grasp and palm frames (grasp_frame,
@@ -141,33 +139,41 @@ SourceGrasp::SourceGrasp(const HandGrasp<S>& g) : SourceGrasp(describe_source(g)
 
 /// Why the source grasp \p s cannot be transferred by any method, or empty if it can: the reason
 /// describe_source gave (a pose or joints that are not finite); fewer than two digits or a thumb
-/// that is not one of them; no curve; or a frame, curve point, fingertip, digit length or palm
-/// shape that is not finite (a SourceGrasp made by hand or read from a file).
+/// that is not one of them; no curve, or a curve of fewer than two points; a frame that is not
+/// finite or not a rigid transform (its rotation orthonormal and proper to 1e-6); or a curve point,
+/// fingertip, digit length (finite, at least 0) or palm shape (finite, sizes at least 0) that is
+/// not (a SourceGrasp made by hand or read from a file).
 [[nodiscard]] inline std::string unusable_source(const SourceGrasp& s) {
   if (!s.unusable.empty()) return s.unusable;
   if (s.digits.size() < 2) return "the source hand has fewer than two fingers";
   if (s.thumb < 0 || s.thumb >= static_cast<int>(s.digits.size()))
     return "the source hand's thumb is not one of its fingers";
   if (s.curves.empty()) return "the source hand has no curve to take windings of";
-  if (!detail::finite_pose(s.root) || !detail::finite_pose(s.grasp_frame) ||
-      !detail::finite_pose(s.palm_frame))
-    return "the source hand pose is not finite";
+  for (const Eigen::Isometry3d* T : {&s.root, &s.grasp_frame, &s.palm_frame}) {
+    if (!T->matrix().allFinite()) return "the source hand pose is not finite";
+    const Eigen::Matrix3d R = T->linear();
+    if ((R.transpose() * R - Eigen::Matrix3d::Identity()).norm() > 1e-6 ||
+        std::abs(R.determinant() - 1.0) > 1e-6)
+      return "a frame of the source hand is not a rigid transform";
+  }
   for (const auto& curve : s.curves) {
     if (curve.size() < 2) return "a curve of the source hand has fewer than two points";
     for (const Vec3& p : curve)
       if (!p.allFinite()) return "a curve of the source hand is not finite";
   }
   for (const SourceDigit& digit : s.digits)
-    if (!digit.tip.allFinite() || !std::isfinite(digit.length) || !(digit.length > 0.0))
-      return "a fingertip or digit length of the source hand is not finite and positive";
+    if (!digit.tip.allFinite() || !std::isfinite(digit.length) || !(digit.length >= 0.0))
+      return "a fingertip or digit length of the source hand is not finite, or a length below 0";
   for (const Primitive& shape : s.palm)
-    if (!shape.R.allFinite() || !shape.p.allFinite() || !shape.size.allFinite())
-      return "a palm shape of the source hand is not finite";
+    if (!shape.R.allFinite() || !shape.p.allFinite() || !shape.size.allFinite() ||
+        (shape.size.array() < 0.0).any())
+      return "a palm shape of the source hand is not finite, or has a size below 0";
   return {};
 }
 
 /// The windings of the source's curves around \p p (object frame), in its curves' order: what
-/// hand_windings gives for the source hand's model at its grasp.
+/// hand_windings gives for the source hand's model at its grasp. Requires a source that
+/// unusable_source accepts and a finite \p p (the methods check both first).
 [[nodiscard]] inline Eigen::VectorXd source_windings(const SourceGrasp& s, const Vec3& p) {
   const Vec3 local = s.root.inverse() * p;
   Eigen::VectorXd w(static_cast<Eigen::Index>(s.curves.size()));

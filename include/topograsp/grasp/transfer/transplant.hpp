@@ -16,7 +16,7 @@ namespace topograsp {
 /// as far as needed to clear the object, then closed until contact and judged (with \p second if
 /// set). Unlike the other methods it is not moved on until contact when it is clear: a baseline is
 /// not given a help that weakens it (docs/results.md measures it). Not planned (reason says why)
-/// for a source that is not finite or a hand that cannot be placed clear of the object.
+/// for a source that unusable_source refuses or a hand that cannot be placed clear of the object.
 template <const auto& Target>
   requires HandModel<decltype(Target)>
 [[nodiscard]] HandTransfer<Target> transplant_grasp(const GraspObject& object,
@@ -38,8 +38,8 @@ template <const auto& Target>
 /// joints at its usual pre-shape (base_preshape: options.sdh_preshape for the SDH), backed off
 /// along its approach only as far as needed to clear the object (searched up to the farthest
 /// fingertip's distance from the palm beyond options.sim.standoff), then closed until contact and
-/// judged (with \p second if set). Not planned (reason says why) for a source that is not finite
-/// or a hand that cannot be placed clear of the object.
+/// judged (with \p second if set). Not planned (reason says why) for a source that unusable_source
+/// refuses or a hand that cannot be placed clear of the object.
 template <const auto& Target>
   requires HandModel<decltype(Target)>
 [[nodiscard]] HandTransfer<Target> autoclose_grasp(const GraspObject& object,

@@ -79,9 +79,9 @@ inline constexpr int k_virtual_finger_openings = 151;
 /// overlaps, or moved on until contact (at most final_approach), closed until contact and judged
 /// (with \p second if set).
 ///
-/// Not planned (planned false, reason says why) for a non-finite source grasp, a pad opposition
-/// shorter than 1 mm or along the source's approach (no axis to turn the hand by), or a hand that
-/// cannot be placed clear of the object.
+/// Not planned (planned false, reason says why) for a source that unusable_source refuses, a pad
+/// opposition shorter than 1 mm or along the source's approach (no axis to turn the hand by), or a
+/// hand that cannot be placed clear of the object.
 template <const auto& Target>
   requires HandModel<decltype(Target)>
 [[nodiscard]] HandTransfer<Target> virtual_finger_grasp(const GraspObject& object,
