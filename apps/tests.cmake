@@ -134,6 +134,19 @@ set_tests_properties("app: grasp_transfer --hands shards merged" PROPERTIES LABE
 expect_rejected(grasp_transfer end_to_end
                 "a method on the arm for a hand of --hands|--hands sdh,barrett --methods topological,closed_windings|--hands: barrett: --methods closed_windings runs with the SDH on the arm only"
                 "--hands with --hand|--hands sdh,barrett --hand sdh|--hands: not with --hand")
+# --source: the SDH's stable topological transfers of the --hands run as the demonstrations, to
+# the Barrett; what does not fit refused.
+add_test(NAME "app: grasp_transfer --source (the SDH demonstrates to the Barrett)"
+         COMMAND grasp_transfer --hand barrett --source ${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_hands/sdh
+                 --methods topological,transplant --jobs 2 --quiet --figures
+                 --out ${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_source)
+set_tests_properties("app: grasp_transfer --source (the SDH demonstrates to the Barrett)" PROPERTIES
+                     LABELS end_to_end DEPENDS "app: grasp_transfer --hands (small run)"
+                     PASS_REGULAR_EXPRESSION "results in .*grasp_transfer_source")
+expect_rejected(grasp_transfer end_to_end
+                "a source that does not exist|--source ${bad}-none|--source: .*-none. does not exist"
+                "a source with --setting|--source ${bad}-none --setting hand|--setting: not with --source"
+                "a source that is not a run|--source ${PROJECT_SOURCE_DIR}/data/schemas/results.schema.json|--source: .*results.schema.json: generator: missing")
 # A hand whose program (grasp_transfer-<hand>) is not built: grasp_transfer, alone in a folder,
 # says which target builds it. Not in the sanitizer build, which has no other hand.
 if(NOT TOPOGRASP_SANITIZE)

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include <grasp_transfer/experiment.hpp>
+#include <grasp_transfer/source_run.hpp>
 #include <topograsp/io/keypoint_grasp.hpp>
 #include <topograsp/io/ycb_objects.hpp>
 
@@ -51,6 +52,9 @@ struct CommandLine {
   /// folders of a run's shards into DIR (merge is true, the shards' folders in shards).
   bool merge = false;
   std::vector<std::filesystem::path> shards;  ///< merge: the shards' output folders
+  /// --source: the earlier run whose hand's stable topological transfers are the demonstrations
+  /// (read into experiment.sources; docs/transfer.md, "A robot hand as the demonstrator")
+  std::filesystem::path source;
 };
 
 /// The largest --jobs accepted.
@@ -307,7 +311,7 @@ inline void parse_closing(std::string_view value, std::string_view option, Grasp
         "--seed",    "--max-hypotheses", "--shard",         "--winding-reference",
         "--set",     "--friction",       "--hold-fraction", "--human-grip",
         "--judge",   "--demonstrations", "--hypotheses",    "--closing",
-        "--setting", "--hand",           "--hands"};
+        "--setting", "--hand",           "--hands",         "--source"};
     bool known = false;
     for (const std::string_view o : value_options) known = known || o == arg;
     if (!known)
@@ -340,6 +344,10 @@ inline void parse_closing(std::string_view value, std::string_view option, Grasp
         cli.hands.emplace_back(h);
     } else if (arg == "--demonstrations") {
       cli.experiment.demonstrations = detail::read_demonstrations(value);
+    } else if (arg == "--source") {
+      if (value.find('\0') != std::string_view::npos)
+        detail::throw_invalid_argument(arg, "the path contains a NUL character");
+      cli.source = std::filesystem::path(std::string(value));
     } else if (arg == "--methods") {
       methods_list = value;
     } else if (arg == "--out") {
@@ -453,6 +461,26 @@ inline void parse_closing(std::string_view value, std::string_view option, Grasp
     demonstration_objects = names;
     objects_list = demonstration_objects;
   }
+  std::string source_objects;  // the source run's objects, with --source
+  if (!cli.source.empty()) {
+    for (const std::string_view other : {"--demonstrations", "--hypotheses", "--setting"})
+      if (std::find(seen.begin(), seen.end(), other) != seen.end())
+        detail::throw_invalid_argument(other,
+                                       "not with --source: the source run's grasps are the "
+                                       "demonstrations, transferred on a free base");
+    const bool chosen = std::find(seen.begin(), seen.end(), "--objects") != seen.end();
+    std::vector<std::string> wanted;
+    if (chosen)
+      for (const std::string_view name :
+           detail::split_cli_list(objects_list, "--objects", objects::all_names(), "object"))
+        wanted.emplace_back(name);
+    read_source_run(cli.source, wanted, cli.experiment);
+    if (!chosen) {  // every object of the source run, in its order
+      for (const Json& o : cli.experiment.source_config.at("objects").as_array())
+        source_objects += (source_objects.empty() ? "" : ",") + o.as_string();
+      objects_list = source_objects;
+    }
+  }
   for (const std::string_view name :
        detail::split_cli_list(objects_list, "--objects", objects::all_names(), "object")) {
     std::optional<GraspObject> o;
@@ -497,6 +525,11 @@ options:
   --demonstrations FILE_OR_DIR  recorded human grasps (21 hand keypoints each, the JSON format
                    of docs/transfer.md; a folder: its *.json files by name) as the
                    demonstrations, in place of the planned ones; their objects are the run's
+  --source RUN     a robot hand as the demonstrator: the stable topological transfers of the
+                   earlier run RUN (an output folder, or its results.json) are the
+                   demonstrations, transferred to --hand on a free base; the objects default to
+                   RUN's; RUN must have been judged as this run is (seed, judges, friction,
+                   closing, stability suite); not with --demonstrations, --hypotheses, --setting
   --objects LIST   comma-separated objects, each once (default hammer,bottle; also mug, box,
                    ball, can, and the YCB objects ycb_cracker_box, ycb_sugar_box,
                    ycb_tomato_soup_can, ycb_mustard_bottle, ycb_banana, ycb_bleach_cleanser,

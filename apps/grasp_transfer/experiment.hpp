@@ -26,6 +26,7 @@
 #include <topograsp/grasp/keypoint_fit.hpp>
 #include <topograsp/grasp/transfer.hpp>
 #include <topograsp/grasp/transfer/hand.hpp>
+#include <topograsp/io/json.hpp>
 
 namespace topograsp {
 
@@ -50,6 +51,18 @@ enum class Judge : std::uint8_t { builtin, mujoco, both };
 struct RecordedGrasp {
   std::string source;
   KeypointGrasp grasp;
+};
+
+/// A robot hand's grasp as a demonstration (grasp_transfer --source): a stable transfer of an
+/// earlier run, read from its results.json (source_run.hpp).
+struct SourceDemonstration {
+  std::string object;  ///< the object's name
+  int id = 0;          ///< the hypothesis id in the earlier run (its shake seed, grasp_seed)
+  SourceGrasp grasp;   ///< the source hand when closing ended, as its record's source_grasp
+  /// The demonstration's record in this run's results.json (the earlier run's record of the
+  /// transfer, as the demonstration: method "source", source_demonstration_record()).
+  Json record;
+  std::string scene;  ///< the MJCF text of its scene in the earlier run
 };
 
 /// Which rule makes the grasp hypotheses of the planned demonstrations.
@@ -85,6 +98,16 @@ struct ExperimentOptions {
   /// transferred if stable; an object's k-th recording (in this order) is its hypothesis k. Every
   /// recording's object must be one of `objects`.
   std::vector<RecordedGrasp> demonstrations;
+  /// A robot hand's grasps (grasp_transfer --source): when not empty they are the demonstrations,
+  /// in place of the human hand's, each transferred as it is (it was judged stable in its run);
+  /// an object's demonstrations are its sources, each hypothesis id the source's id. Every
+  /// source's object must be one of `objects`; not with `demonstrations`, the arm setting, or a
+  /// method that runs on the arm only (experiment_method for a hand other than the SDH).
+  std::vector<SourceDemonstration> sources;
+  /// The source run: its results.json's path, its hand's model name, the FNV-1a hash of its text
+  /// and its config (results_config; read_source_run), recorded in this run's config.
+  std::string source_results, source_hand, source_hash;
+  Json source_config;
   /// How the planned demonstrations are made: box_hypotheses (BADGr's 4 per reachable box face,
   /// the default) or demonstrator_hypotheses (8 rolls per face, each also jittered once,
   /// grasp_transfer --hypotheses demonstrator).
@@ -266,15 +289,19 @@ std::vector<ObjectResultOf<M>> run_experiment_with(const ExperimentOptions& opti
 
 // One method's transfer of the demonstration g to hand M: the SDH's by transfer() (the paper's
 // setting, judged also by options.sim.second_judge_sdh), any other hand's by transfer_hand() on a
-// free base, judged also by second.
+// free base, judged also by second. A robot hand's grasp (source not null) is transferred by
+// transfer_hand() to every hand, the SDH too.
 template <const auto& M>
 HandTransfer<M> experiment_transfer(TransferMethod method, const GraspObject& object,
-                                    const HumanGrasp& g, const TransferOptions& options,
-                                    const SecondJudge<M>& second) {
+                                    const HumanGrasp& g, const SourceDemonstration* source,
+                                    const TransferOptions& options, const SecondJudge<M>& second) {
   if constexpr (is_sdh<M>()) {
-    (void)second;
+    if (source != nullptr)
+      return transfer_hand<M>(method, object, source->grasp, options,
+                              second ? second : options.sim.second_judge_sdh);
     return transfer(method, object, g, options);
   } else {
+    if (source != nullptr) return transfer_hand<M>(method, object, source->grasp, options, second);
     TransferRun<M> refusal(method, unusable_human_grasp(g), options);
     if (refusal.refused()) return refusal.unplanned();
     return transfer_hand<M>(method, object, describe_source(g), options, second);
@@ -293,7 +320,9 @@ HandTransfer<M> experiment_transfer(TransferMethod method, const GraspObject& ob
 /// human_max_grip outside [1, k_max_grip], a closing option outside its range (close_parameters,
 /// named "transfer.sim.close.<option>"),
 /// bad stability options (validate_stability_options, named "transfer.sim.stability.<option>"),
-/// or a skipped hypothesis of an object that is not in the run.
+/// a skipped hypothesis of an object that is not in the run; for sources (options.sources): with
+/// recorded demonstrations or the arm setting ("sources"), a method that transfers a human
+/// demonstration only ("methods"), a source whose object is not in the run or one given twice.
 template <const auto& M = models::schunk_sdh>
 void validate_experiment_options(const ExperimentOptions& options,
                                  const SecondJudge<M>& second = {}) {
@@ -335,6 +364,32 @@ void validate_experiment_options(const ExperimentOptions& options,
       detail::throw_invalid_argument("demonstrations[" + std::to_string(i) + "].object",
                                      "\"" + name + "\" (" + options.demonstrations[i].source +
                                          ") is not an object of the run");
+  }
+  if (!options.sources.empty()) {
+    if (!options.demonstrations.empty())
+      detail::throw_invalid_argument("sources", "not with recorded demonstrations");
+    if (options.arm_setting)
+      detail::throw_invalid_argument("sources",
+                                     "a robot hand's grasps are transferred on a free base, not "
+                                     "in the arm setting");
+    for (const TransferMethod m : options.methods)
+      if (!any_hand_method(m))
+        detail::throw_invalid_argument(
+            "methods", "\"" + std::string(to_string(m)) +
+                           "\" transfers a human demonstration only (on the SDH on the arm); a "
+                           "robot hand's grasp is transferred on a free base");
+    for (std::size_t i = 0; i < options.sources.size(); ++i) {
+      const SourceDemonstration& d = options.sources[i];
+      if (std::none_of(options.objects.begin(), options.objects.end(),
+                       [&](const GraspObject& o) { return o.name == d.object; }))
+        detail::throw_invalid_argument("sources[" + std::to_string(i) + "].object",
+                                       "\"" + d.object + "\" is not an object of the run");
+      for (std::size_t j = 0; j < i; ++j)
+        if (options.sources[j].object == d.object && options.sources[j].id == d.id)
+          detail::throw_invalid_argument(
+              "sources[" + std::to_string(i) + "]",
+              d.object + " hypothesis " + std::to_string(d.id) + " is given twice");
+    }
   }
   validate_transfer_parameters(options.transfer);
   require_non_negative(options.transfer.sim.friction, "transfer.sim.friction");
@@ -408,22 +463,31 @@ std::vector<ObjectResultOf<M>> detail::run_experiment_with(const ExperimentOptio
   const std::size_t no = options.objects.size(), nm = options.methods.size();
   std::vector<std::vector<GraspHypothesis>> hyps(no);
   std::vector<std::vector<const RecordedGrasp*>> recorded(no);
+  std::vector<std::vector<const SourceDemonstration*>> sources(no);  // [object]: by id
   std::vector<std::pair<std::size_t, int>> tasks;
   std::vector<ObjectResultOf<M>> results(no);
   std::vector<std::vector<std::size_t>> task_of(no);  // [object][k]: the task of its k-th id
   for (std::size_t oi = 0; oi < no; ++oi) {
     results[oi].object = options.objects[oi];
-    if (options.demonstrations.empty())
+    for (const SourceDemonstration& d : options.sources)
+      if (d.object == options.objects[oi].name) sources[oi].push_back(&d);
+    std::sort(
+        sources[oi].begin(), sources[oi].end(),
+        [](const SourceDemonstration* a, const SourceDemonstration* b) { return a->id < b->id; });
+    if (options.demonstrations.empty() && options.sources.empty())
       hyps[oi] = options.hypotheses == HypothesisRule::demonstrator
                      ? demonstrator_hypotheses(options.objects[oi], options.seed)
                      : box_hypotheses(options.objects[oi]);
     for (const RecordedGrasp& r : options.demonstrations)
       if (r.grasp.object == options.objects[oi].name) recorded[oi].push_back(&r);
-    const int n =
-        static_cast<int>(options.demonstrations.empty() ? hyps[oi].size() : recorded[oi].size());
-    for (int i = 0; i < n; ++i) {
+    const int n = static_cast<int>(!options.sources.empty()         ? sources[oi].size()
+                                   : options.demonstrations.empty() ? hyps[oi].size()
+                                                                    : recorded[oi].size());
+    for (int k = 0; k < n; ++k) {
+      // A source keeps its hypothesis id (its shake seed); the others' id is their index.
+      const int i = options.sources.empty() ? k : sources[oi][static_cast<std::size_t>(k)]->id;
       if (i % options.shard_count != options.shard_index ||
-          (options.max_hypotheses > 0 && i >= options.max_hypotheses))
+          (options.max_hypotheses > 0 && k >= options.max_hypotheses))
         continue;
       const std::pair<std::string, int> key{options.objects[oi].name, i};
       if (std::find(options.skip.begin(), options.skip.end(), key) != options.skip.end()) continue;
@@ -448,9 +512,20 @@ std::vector<ObjectResultOf<M>> detail::run_experiment_with(const ExperimentOptio
           if (second) transfer_options.sim.second_judge_sdh = second;
         HumanGrasp& g = human[static_cast<std::size_t>(k)];
         const auto i = static_cast<std::size_t>(id);
-        g = recorded[oi].empty()
-                ? demonstrate(object, hyps[oi][i], id, transfer_options.sim)
-                : demonstrate_recorded(object, recorded[oi][i]->grasp, id, transfer_options.sim);
+        const SourceDemonstration* source = nullptr;
+        if (!sources[oi].empty()) {
+          // A robot hand's grasp: stable in its run, so transferred as it is. g carries its id
+          // and verdict only (its record is the source's: hypothesis_records).
+          for (const SourceDemonstration* d : sources[oi])
+            if (d->id == id) source = d;
+          g.id = id;
+          g.reached = true;
+          g.stability.stable = true;
+        } else {
+          g = recorded[oi].empty()
+                  ? demonstrate(object, hyps[oi][i], id, transfer_options.sim)
+                  : demonstrate_recorded(object, recorded[oi][i]->grasp, id, transfer_options.sim);
+        }
         if (!recorded[oi].empty()) {
           const std::string which = "warning: [" + object.name + "] recording " +
                                     recorded[oi][i]->source + " (hypothesis " + std::to_string(id) +
@@ -487,7 +562,7 @@ std::vector<ObjectResultOf<M>> detail::run_experiment_with(const ExperimentOptio
           };
           for (const TransferMethod m : options.methods) {
             if (m != TransferMethod::shuffled_windings) {
-              t.push_back(experiment_transfer<M>(m, object, g, transfer_options, second));
+              t.push_back(experiment_transfer<M>(m, object, g, source, transfer_options, second));
               continue;
             }
             if constexpr (is_sdh<M>()) {  // the SDH only (experiment_method)

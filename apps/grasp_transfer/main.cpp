@@ -53,8 +53,9 @@ void print_table(const Json& doc) {
   std::vector<const Json*> objects;
   for (const Json& o : doc.at("objects").as_array()) objects.push_back(&o);
   if (objects.size() > 1 && doc.contains("overall")) objects.push_back(&doc.at("overall"));
-  // The paper's numbers are the SDH's.
-  const bool paper_hand = config.at("hand").as_string() == models::schunk_sdh.name.view();
+  // The paper's numbers are the SDH's, transferred from the human hand.
+  const bool paper_hand =
+      config.at("hand").as_string() == models::schunk_sdh.name.view() && !config.contains("source");
   const auto paper = [paper_hand](const std::string& object, int row) -> std::string {
     // Table I of the paper: hammer, bottle; rows: grasps, stable, autoclose, topological.
     if (!paper_hand) return "-";

@@ -52,15 +52,21 @@ void print_table(const Json& doc);
 void copy_scenes(const std::vector<Json>& records, const std::filesystem::path& from,
                  const std::filesystem::path& to);
 
-// The MJCF scene of each grasp of a hypothesis, into dir/scenes: the human demonstration and each
-// planned transfer to hand M.
+// The MJCF scene of each grasp of a hypothesis, into dir/scenes: the demonstration (the human
+// hand's, or a source's scene as its run wrote it) and each planned transfer to hand M.
 template <const auto& M>
 void write_scenes(const std::filesystem::path& dir, const ExperimentOptions& experiment,
                   const GraspObject& object, const HumanGrasp& g,
                   const std::vector<HandTransfer<M>>& transfers) {
   if (!g.reached) return;
-  detail::write_text_file(dir / scene_path(object.name, g.id, "human"),
-                          human_scene(object, g, experiment.transfer));
+  const SourceDemonstration* source = nullptr;
+  for (const SourceDemonstration& d : experiment.sources)
+    if (d.object == object.name && d.id == g.id) source = &d;
+  if (source != nullptr)  // a robot hand's grasp: its scene in the run it comes from
+    detail::write_text_file(dir / scene_path(object.name, g.id, "source"), source->scene);
+  else
+    detail::write_text_file(dir / scene_path(object.name, g.id, "human"),
+                            human_scene(object, g, experiment.transfer));
   for (const HandTransfer<M>& t : transfers)
     if (t.planned)
       detail::write_text_file(dir / scene_path(object.name, g.id, to_string(t.method)),
@@ -121,6 +127,7 @@ int run_hand(CommandLine& cli, bool& started, bool& committing) {
   const std::filesystem::path& stage = folder.staging();
   std::filesystem::create_directories(stage / "scenes");
   const Json config = results_config(cli.experiment, M.name.view());
+  check_source_config(cli.experiment, config);
   // --resume: the hypotheses that interrupted runs journalled (with all their scenes), once each.
   std::vector<JournalEntry> resumed;
   for (const std::filesystem::path& leftover : folder.leftovers()) {
@@ -169,7 +176,7 @@ int run_hand(CommandLine& cli, bool& started, bool& committing) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const Json doc = results_json(cli.experiment, results, earlier);
   detail::write_text_file(stage / "results.json", doc.dump(2) + "\n");
-  if (cli.figures) (void)write_report<M>(stage, results);
+  if (cli.figures) (void)write_report<M>(stage, results, 3, cli.experiment.sources);
   committing = true;
   folder.commit();
   print_table(doc);

@@ -59,20 +59,23 @@ inline SvgPanel grasp_panel(const GraspObject& object, const Eigen::Isometry3d& 
 }  // namespace detail
 
 /// Writes the figures and index.html of \p results (the demonstrations transferred to hand M) into
-/// \p dir (figures under dir/figures): \p per_object grasps of each object (the first stable human
-/// grasps), and the Fig. 7 and cost plots of the first topological plan. Returns the paths
-/// written, relative to \p dir.
+/// \p dir (figures under dir/figures): \p per_object grasps of each object (the first stable
+/// demonstrations: a human grasp, or with \p sources a robot hand's, drawn as the transfer reads
+/// it: its palm, curves and fingertips), and the Fig. 7 and cost plots of the first topological
+/// plan. Returns the paths written, relative to \p dir.
 /// \throws topograsp::invalid_argument naming "path" if a file cannot be written.
 template <const auto& M>
 std::vector<std::string> write_report(const std::filesystem::path& dir,
                                       const std::vector<ObjectResultOf<M>>& results,
-                                      int per_object = 3) {
+                                      int per_object = 3,
+                                      const std::vector<SourceDemonstration>& sources = {}) {
   std::filesystem::create_directories(dir / "figures");
   const std::string hand(M.name.view());
+  const std::string demonstrator = sources.empty() ? "human hand" : sources.front().grasp.hand;
   HtmlPage page;
-  page.title = "topograsp: grasp transfer, human hand to " + hand;
+  page.title = "topograsp: grasp transfer, " + demonstrator + " to " + hand;
   page.intro =
-      "Success rate of each transfer method over the stable human grasps (the stability suite "
+      "Success rate of each transfer method over the stable demonstrations (the stability suite "
       "from the moment the fingers closed: the paper's shake and gravity along the six axis "
       "directions of the hand, the hand without the arm), and for a few grasps the human "
       "demonstration beside each transfer, captioned with the suite's verdict.";
@@ -87,7 +90,24 @@ std::vector<std::string> write_report(const std::filesystem::path& dir,
       const HumanGrasp& g = *std::find_if(r.human.begin(), r.human.end(),
                                           [&](const HumanGrasp& h) { return h.id == id; });
       std::vector<SvgPanel> panels;
-      {
+      const SourceDemonstration* source = nullptr;
+      for (const SourceDemonstration& d : sources)
+        if (d.object == r.object.name && d.id == id) source = &d;
+      if (source != nullptr) {  // the source as the transfer reads it (object frame)
+        const SourceGrasp& sg = source->grasp;
+        SvgPanel p = detail::grasp_panel(r.object, Eigen::Isometry3d::Identity(),
+                                         sg.hand + "\nstable", true);
+        for (const Primitive& shape : sg.palm)
+          p.scene.add(shape.transformed(sg.root), svg_colours::robot, "hand");
+        for (std::size_t c = 0; c < sg.curves.size(); ++c) {
+          std::vector<Vec3> points;
+          for (const Vec3& x : sg.curves[c]) points.push_back(sg.root * x);
+          p.scene.add_polyline(std::move(points), svg_colours::curve(c),
+                               "\xCE\xB3" + std::to_string(c + 1));
+        }
+        for (const SourceDigit& digit : sg.digits) p.scene.add_marker(sg.root * digit.tip, {}, 3.0);
+        panels.push_back(std::move(p));
+      } else {
         KinematicsData<models::human_hand> d;
         forward_kinematics(d, g.q);
         SvgPanel p = detail::grasp_panel(r.object, g.object_pose, "human\nstable", true);
@@ -117,7 +137,7 @@ std::vector<std::string> write_report(const std::filesystem::path& dir,
                 svg_panels(panels, r.object.name + ", grasp " + std::to_string(id)));
       written.push_back(name);
       page.figures.push_back({name, r.object.name + ", grasp " + std::to_string(id) +
-                                        ": the human demonstration and each transfer"});
+                                        ": the demonstration and each transfer"});
       for (std::size_t m = 0; m < r.transfers.size() && !plotted; ++m) {
         const HandTransfer<M>& t = r.transfers[m][k];
         if (t.winding_plan.empty()) continue;

@@ -15,6 +15,7 @@
 #include <grasp_transfer/experiment.hpp>
 #include <grasp_transfer/file_name.hpp>
 #include <grasp_transfer/output_folder.hpp>
+#include <grasp_transfer/source_json.hpp>
 #include <grasp_transfer/summaries.hpp>
 #include <topograsp/evaluation/statistics.hpp>
 #include <topograsp/grasp/grasp_identity.hpp>
@@ -56,14 +57,6 @@ template <const auto& M>
 }
 
 namespace detail {
-inline Json json_vector(const auto& v) {
-  // Built in place: moving number-holding Json temporaries into a vector trips GCC 12's
-  // -Wmaybe-uninitialized on std::variant.
-  Json::Array a;
-  a.reserve(static_cast<std::size_t>(v.size()));
-  for (Eigen::Index i = 0; i < v.size(); ++i) a.emplace_back(static_cast<double>(v[i]));
-  return Json(std::move(a));
-}
 
 // One test's record as results.json writes it; a test that was not run (steps 0) has null for
 // what it would have measured.
@@ -343,6 +336,14 @@ inline void check_scene_names(const ExperimentOptions& options) {
     }
     cfg.set("demonstrations", sources);
   }
+  if (!options.sources.empty()) {  // a robot hand's grasps in place of the human's
+    Json source = Json::object();
+    source.set("results", options.source_results);
+    source.set("hand", options.source_hand);
+    source.set("method", "topological");
+    source.set("fnv1a_64", options.source_hash);
+    cfg.set("source", source);
+  }
   // 0: each pair from the table of materials (docs/objects.md); else --friction's coefficient.
   cfg.set("friction", options.transfer.sim.friction);
   cfg.set("hand_stiffness", options.transfer.sim.scene.stepper.kinematic_stiffness);
@@ -392,6 +393,9 @@ template <const auto& M>
   if (!g.reached) return out;
   const std::string& second_name = options.transfer.sim.second_judge_name;
   const std::string seed = std::to_string(grasp_seed(options.seed, object.name, g.id));
+  const SourceDemonstration* source = nullptr;
+  for (const SourceDemonstration& d : options.sources)
+    if (d.object == object.name && d.id == g.id) source = &d;
   Json rec = Json::object();
   rec.set("object", object.name);
   rec.set("id", g.id);
@@ -431,7 +435,8 @@ template <const auto& M>
   rec.set("joint_names", detail::json_joint_names<models::human_hand>());
   detail::set_stability(rec, &g.stability);
   detail::set_second_and_quality(rec, g.second, &g.quality, second_name);
-  out.push_back(std::move(rec));
+  // A robot hand's grasp as the demonstration: its record in its own run (method "source").
+  out.push_back(source != nullptr ? source->record : std::move(rec));
   for (const HandTransfer<M>* tp : transfers) {
     const HandTransfer<M>& t = *tp;
     Json r = Json::object();
@@ -461,6 +466,9 @@ template <const auto& M>
                                                : Json());
     r.set("configurations", detail::json_configurations(t));
     r.set("motion", detail::json_motion(t.motion));
+    // The hand when closing ended as a source grasp, for a run that transfers from this hand
+    // (grasp_transfer --source).
+    r.set("source_grasp", t.planned ? source_grasp_json(describe_source(source_grasp(t))) : Json());
     detail::set_stability(r, t.planned ? &t.stability : nullptr);
     detail::set_second_and_quality(r, t.planned ? t.second : std::nullopt,
                                    t.planned ? &t.quality : nullptr, second_name);
@@ -470,6 +478,13 @@ template <const auto& M>
 }
 
 namespace detail {
+
+// Whether \p rec is a demonstration's record: a human hand's ("human") or, with
+// grasp_transfer --source, a robot hand's ("source").
+inline bool is_demonstration(const Json& rec) {
+  const std::string& m = rec.at("method").as_string();
+  return m == "human" || m == "source";
+}
 
 // Sets "cluster" on the records of one object (\p name): each stable demonstration's is the id of
 // the first demonstration of its cluster (grasp_clusters() with the config's symmetry of the
@@ -484,7 +499,7 @@ inline void set_clusters(const Json& config, const std::string& name, std::vecto
   std::vector<Json*> stable;
   for (Json& rec : records) {
     rec.set("cluster", Json());
-    if (rec.at("method").as_string() != "human" || !record_stable(rec)) continue;
+    if (!is_demonstration(rec) || !record_stable(rec)) continue;
     stable.push_back(&rec);
     poses.push_back(pose_of(rec.at("hand_pose")));
     const Json& q = rec.at("joints");
@@ -681,7 +696,7 @@ struct ObjectRecords {
     // The sort key: (method: the demonstration first, then config order; id).
     const auto key = [&](const Json& rec) {
       const std::string& m = rec.at("method").as_string();
-      const std::size_t mi = m == "human" ? 0 : index_of(methods, m) + 1;
+      const std::size_t mi = detail::is_demonstration(rec) ? 0 : index_of(methods, m) + 1;
       if (mi == methods.size() + 1)
         detail::throw_invalid_argument("grasps", "method \"" + m + "\" of " + o.name + " " +
                                                      id_text(rec) +
