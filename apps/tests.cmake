@@ -145,7 +145,7 @@ set_tests_properties("app: grasp_transfer --source (the SDH demonstrates to the 
                      PASS_REGULAR_EXPRESSION "results in .*grasp_transfer_source")
 expect_rejected(grasp_transfer end_to_end
                 "a source that does not exist|--source ${bad}-none|--source: .*-none. does not exist"
-                "a source with --setting|--source ${bad}-none --setting hand|--setting: not with --source"
+                "a source with --hypotheses|--source ${bad}-none --hypotheses box|--hypotheses: not with --source"
                 "a source that is not a run|--source ${PROJECT_SOURCE_DIR}/data/schemas/results.schema.json|--source: .*results.schema.json: generator: missing")
 # A hand whose program (grasp_transfer-<hand>) is not built: grasp_transfer, alone in a folder,
 # says which target builds it. Not in the sanitizer build, which has no other hand.

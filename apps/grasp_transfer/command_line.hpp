@@ -463,11 +463,11 @@ inline void parse_closing(std::string_view value, std::string_view option, Grasp
   }
   std::string source_objects;  // the source run's objects, with --source
   if (!cli.source.empty()) {
-    for (const std::string_view other : {"--demonstrations", "--hypotheses", "--setting"})
+    for (const std::string_view other : {"--demonstrations", "--hypotheses", "--human-grip"})
       if (std::find(seen.begin(), seen.end(), other) != seen.end())
         detail::throw_invalid_argument(other,
                                        "not with --source: the source run's grasps are the "
-                                       "demonstrations, transferred on a free base");
+                                       "demonstrations");
     const bool chosen = std::find(seen.begin(), seen.end(), "--objects") != seen.end();
     std::vector<std::string> wanted;
     if (chosen)
@@ -498,6 +498,8 @@ inline void parse_closing(std::string_view value, std::string_view option, Grasp
   for (const std::string_view name :
        detail::split_cli_list(methods_list, "--methods", method_names, "method"))
     cli.experiment.methods.push_back(transfer_method(name));
+  // A source's verdicts are comparable with this run's only if both were judged alike.
+  if (!cli.source.empty()) check_source_config(cli.experiment, results_config(cli.experiment));
   return cli;
 }
 
@@ -527,9 +529,11 @@ options:
                    demonstrations, in place of the planned ones; their objects are the run's
   --source RUN     a robot hand as the demonstrator: the stable topological transfers of the
                    earlier run RUN (an output folder, or its results.json) are the
-                   demonstrations, transferred to --hand on a free base; the objects default to
-                   RUN's; RUN must have been judged as this run is (seed, judges, friction,
-                   closing, stability suite); not with --demonstrations, --hypotheses, --setting
+                   demonstrations (each keeps its id; --max-hypotheses M: the first M of each
+                   object), transferred to --hand on a free base; the objects default to RUN's;
+                   RUN must be a whole run (not a shard) judged as this run is (seed, judges,
+                   friction, closing, stability suite); not with --demonstrations,
+                   --hypotheses, --human-grip or --setting arm
   --objects LIST   comma-separated objects, each once (default hammer,bottle; also mug, box,
                    ball, can, and the YCB objects ycb_cracker_box, ycb_sugar_box,
                    ycb_tomato_soup_can, ycb_mustard_bottle, ycb_banana, ycb_bleach_cleanser,

@@ -121,10 +121,18 @@ struct ExperimentOptions {
   GraspTolerance grasp_tolerance{};
 };
 
+/// The source of \p sources that is hypothesis \p id of the object called \p object, or null.
+[[nodiscard]] inline const SourceDemonstration* find_source(
+    const std::vector<SourceDemonstration>& sources, std::string_view object, int id) noexcept {
+  for (const SourceDemonstration& d : sources)
+    if (d.object == object && d.id == id) return &d;
+  return nullptr;
+}
+
 /// The numbers of one method on one object.
 struct MethodSummary {
   TransferMethod method = TransferMethod::topological;
-  int tested = 0;  ///< stable human grasps transferred
+  int tested = 0;  ///< stable demonstrations transferred
   int stable = 0;  ///< transfers that the stability suite called stable
   [[nodiscard]] double rate() const noexcept {
     return tested > 0 ? static_cast<double>(stable) / tested : 0.0;
@@ -138,7 +146,7 @@ struct ObjectResultOf {
   int hypotheses = 0;                  ///< hypotheses run (after sharding)
   std::vector<HumanGrasp> human;       ///< every demonstration, in id order
   std::vector<MethodSummary> methods;  ///< in options.methods order
-  /// [method][k]: the transfer of the k-th stable human grasp by each method
+  /// [method][k]: the transfer of the k-th stable demonstration by each method
   std::vector<std::vector<HandTransfer<M>>> transfers;
   std::vector<int> transferred_ids;  ///< the human grasp id of each k
   [[nodiscard]] int stable_human() const noexcept {
@@ -148,7 +156,7 @@ struct ObjectResultOf {
 /// Everything measured on one object, the demonstrations transferred to the SDH (the paper's).
 using ObjectResult = ObjectResultOf<models::schunk_sdh>;
 
-/// The verdicts of method \p m (an index into \p r.methods) on each stable human grasp of \p r,
+/// The verdicts of method \p m (an index into \p r.methods) on each stable demonstration of \p r,
 /// in the order of r.transferred_ids: by the engine that decides (\p second_judge false) or by
 /// the second judge (true). A transfer that was not planned fails in both; a planned one without
 /// a second verdict (no second judge in the run) fails in the second. Every method's vector has
@@ -512,12 +520,10 @@ std::vector<ObjectResultOf<M>> detail::run_experiment_with(const ExperimentOptio
           if (second) transfer_options.sim.second_judge_sdh = second;
         HumanGrasp& g = human[static_cast<std::size_t>(k)];
         const auto i = static_cast<std::size_t>(id);
-        const SourceDemonstration* source = nullptr;
-        if (!sources[oi].empty()) {
+        const SourceDemonstration* source = find_source(options.sources, object.name, id);
+        if (source != nullptr) {
           // A robot hand's grasp: stable in its run, so transferred as it is. g carries its id
           // and verdict only (its record is the source's: hypothesis_records).
-          for (const SourceDemonstration* d : sources[oi])
-            if (d->id == id) source = d;
           g.id = id;
           g.reached = true;
           g.stability.stable = true;

@@ -50,7 +50,9 @@ inline constexpr std::string_view results_generator = "topograsp grasp_transfer"
 
 /// The version of results.json's schema (data/schemas/results.schema.json): its "schema_version".
 /// 2 added it with the executable records of every transfer ("configurations", "motion",
-/// "object_pose"); 3 the config's "hand" (grasp_transfer --hand); files without it are version 1.
+/// "object_pose"); 3 the config's "hand" (grasp_transfer --hand); 4 the closing's grip records; 5
+/// each transfer's "source_grasp" and the demonstrations of a source hand (grasp_transfer
+/// --source); files without it are version 1.
 inline constexpr int results_schema_version = 5;
 
 /// The name prefix of the staging folders inside an output folder.

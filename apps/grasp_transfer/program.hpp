@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file
-/// grasp_transfer's program for one robot hand: run_hand<M> runs the experiment with the human
-/// demonstrations transferred to hand M (or resumes it), journals each hypothesis, writes its
-/// scenes, records and figures and commits the output folder; print_table prints Table I from a
-/// results.json. Each hand of a program is compiled in a translation unit of its own that
-/// registers it (TOPOGRASP_HAND_PROGRAM, apps/grasp_transfer/hands/*.cpp; a user's imported hand
-/// by topograsp_add_hand_program()), and main.cpp picks the one --hand names
-/// (docs/transfer.md, "Any hand").
+/// grasp_transfer's program for one robot hand: run_hand<M> runs the experiment with the
+/// demonstrations (the human hand's, or a source hand's) transferred to hand M (or resumes it),
+/// journals each hypothesis, writes its scenes, records and figures and commits the output folder;
+/// print_table prints Table I from a results.json. Each hand of a program is compiled in a
+/// translation unit of its own that registers it (TOPOGRASP_HAND_PROGRAM,
+/// apps/grasp_transfer/hands/*.cpp; a user's imported hand by topograsp_add_hand_program()), and
+/// main.cpp picks the one --hand names (docs/transfer.md, "Any hand").
 #pragma once
 
 #include <algorithm>
@@ -59,10 +59,9 @@ void write_scenes(const std::filesystem::path& dir, const ExperimentOptions& exp
                   const GraspObject& object, const HumanGrasp& g,
                   const std::vector<HandTransfer<M>>& transfers) {
   if (!g.reached) return;
-  const SourceDemonstration* source = nullptr;
-  for (const SourceDemonstration& d : experiment.sources)
-    if (d.object == object.name && d.id == g.id) source = &d;
-  if (source != nullptr)  // a robot hand's grasp: its scene in the run it comes from
+  if (const SourceDemonstration* source =
+          find_source(experiment.sources, object.name,
+                      g.id))  // a robot hand's grasp: its scene in the run it comes from
     detail::write_text_file(dir / scene_path(object.name, g.id, "source"), source->scene);
   else
     detail::write_text_file(dir / scene_path(object.name, g.id, "human"),
@@ -127,7 +126,6 @@ int run_hand(CommandLine& cli, bool& started, bool& committing) {
   const std::filesystem::path& stage = folder.staging();
   std::filesystem::create_directories(stage / "scenes");
   const Json config = results_config(cli.experiment, M.name.view());
-  check_source_config(cli.experiment, config);
   // --resume: the hypotheses that interrupted runs journalled (with all their scenes), once each.
   std::vector<JournalEntry> resumed;
   for (const std::filesystem::path& leftover : folder.leftovers()) {

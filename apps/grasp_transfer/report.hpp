@@ -19,13 +19,13 @@
 
 namespace topograsp {
 
-/// The rows of Table I for \p results: hypotheses, stable human grasps, and the success rate of
+/// The rows of Table I for \p results: hypotheses, stable demonstrations, and the success rate of
 /// each method, one column per object.
 template <const auto& M>
 [[nodiscard]] std::vector<std::vector<std::string>> table_rows(
     const std::vector<ObjectResultOf<M>>& results) {
   std::vector<std::vector<std::string>> rows;
-  std::vector<std::string> hyp{"hypotheses"}, stable{"stable human grasps"};
+  std::vector<std::string> hyp{"hypotheses"}, stable{"stable demonstrations"};
   for (const ObjectResultOf<M>& r : results) {
     hyp.push_back(std::to_string(r.hypotheses));
     stable.push_back(std::to_string(r.stable_human()));
@@ -77,7 +77,7 @@ std::vector<std::string> write_report(const std::filesystem::path& dir,
   page.intro =
       "Success rate of each transfer method over the stable demonstrations (the stability suite "
       "from the moment the fingers closed: the paper's shake and gravity along the six axis "
-      "directions of the hand, the hand without the arm), and for a few grasps the human "
+      "directions of the hand, the hand without the arm), and for a few grasps the "
       "demonstration beside each transfer, captioned with the suite's verdict.";
   page.header.push_back("");
   for (const ObjectResultOf<M>& r : results) page.header.push_back(r.object.name);
@@ -87,13 +87,9 @@ std::vector<std::string> write_report(const std::filesystem::path& dir,
   for (const ObjectResultOf<M>& r : results) {
     for (std::size_t k = 0; k < r.transferred_ids.size() && static_cast<int>(k) < per_object; ++k) {
       const int id = r.transferred_ids[k];
-      const HumanGrasp& g = *std::find_if(r.human.begin(), r.human.end(),
-                                          [&](const HumanGrasp& h) { return h.id == id; });
       std::vector<SvgPanel> panels;
-      const SourceDemonstration* source = nullptr;
-      for (const SourceDemonstration& d : sources)
-        if (d.object == r.object.name && d.id == id) source = &d;
-      if (source != nullptr) {  // the source as the transfer reads it (object frame)
+      // A source drawn as the transfer reads it (object frame), a human grasp as demonstrated.
+      if (const SourceDemonstration* source = find_source(sources, r.object.name, id)) {
         const SourceGrasp& sg = source->grasp;
         SvgPanel p = detail::grasp_panel(r.object, Eigen::Isometry3d::Identity(),
                                          sg.hand + "\nstable", true);
@@ -108,6 +104,8 @@ std::vector<std::string> write_report(const std::filesystem::path& dir,
         for (const SourceDigit& digit : sg.digits) p.scene.add_marker(sg.root * digit.tip, {}, 3.0);
         panels.push_back(std::move(p));
       } else {
+        const HumanGrasp& g = *std::find_if(r.human.begin(), r.human.end(),
+                                            [&](const HumanGrasp& h) { return h.id == id; });
         KinematicsData<models::human_hand> d;
         forward_kinematics(d, g.q);
         SvgPanel p = detail::grasp_panel(r.object, g.object_pose, "human\nstable", true);

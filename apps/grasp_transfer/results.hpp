@@ -26,7 +26,8 @@
 namespace topograsp {
 
 /// The file name (relative to the output folder) of the MJCF scene of a grasp:
-/// "scenes/<object>_<id>_<method>.xml", method "human" for the demonstration. The object and
+/// "scenes/<object>_<id>_<method>.xml", method "human" for the demonstration ("source" for a
+/// source hand's, grasp_transfer --source). The object and
 /// method names are cleaned by file_name_part (any byte but letters, digits, '-', '_' and a
 /// non-leading '.' becomes '_', an empty name "_"), so no name ("../../x", "a/b", "", control
 /// characters) can put the scene outside DIR/scenes.
@@ -57,6 +58,14 @@ template <const auto& M>
 }
 
 namespace detail {
+
+// The FNV-1a 64-bit hash of \p text as 16 hex digits (results.json's config records the files a
+// run read by it).
+inline std::string fnv1a_hex(std::string_view text) {
+  char hash[17];
+  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(fnv1a_64(text)));
+  return hash;
+}
 
 // One test's record as results.json writes it; a test that was not run (steps 0) has null for
 // what it would have measured.
@@ -325,13 +334,9 @@ inline void check_scene_names(const ExperimentOptions& options) {
     // and merge refuse a recording whose file changed in between, not only a renamed one.
     Json sources = Json::array();
     for (const RecordedGrasp& r : options.demonstrations) {
-      char hash[17];
-      std::snprintf(hash, sizeof hash, "%016llx",
-                    static_cast<unsigned long long>(
-                        detail::fnv1a_64(keypoint_grasp_json(r.grasp, r.source))));
       Json d = Json::object();
       d.set("file", r.source);
-      d.set("fnv1a_64", std::string(hash));
+      d.set("fnv1a_64", detail::fnv1a_hex(keypoint_grasp_json(r.grasp, r.source)));
       sources.push_back(std::move(d));
     }
     cfg.set("demonstrations", sources);
@@ -381,21 +386,13 @@ inline void check_scene_names(const ExperimentOptions& options) {
   return cfg;
 }
 
-/// The grasp records of one hypothesis of \p object: its demonstration \p g (none if the human
-/// hand did not reach the object) and each method's transfer of it to hand M, \p transfers in
-/// options.methods order (empty when the demonstration was not stable), in the order
-/// results_document sorts into.
-template <const auto& M>
-[[nodiscard]] std::vector<Json> hypothesis_records(
-    const ExperimentOptions& options, const GraspObject& object, const HumanGrasp& g,
-    const std::vector<const HandTransfer<M>*>& transfers) {
-  std::vector<Json> out;
-  if (!g.reached) return out;
+namespace detail {
+
+// The record of the human demonstration g of object (which reached it).
+inline Json human_record(const ExperimentOptions& options, const GraspObject& object,
+                         const HumanGrasp& g) {
   const std::string& second_name = options.transfer.sim.second_judge_name;
   const std::string seed = std::to_string(grasp_seed(options.seed, object.name, g.id));
-  const SourceDemonstration* source = nullptr;
-  for (const SourceDemonstration& d : options.sources)
-    if (d.object == object.name && d.id == g.id) source = &d;
   Json rec = Json::object();
   rec.set("object", object.name);
   rec.set("id", g.id);
@@ -435,8 +432,28 @@ template <const auto& M>
   rec.set("joint_names", detail::json_joint_names<models::human_hand>());
   detail::set_stability(rec, &g.stability);
   detail::set_second_and_quality(rec, g.second, &g.quality, second_name);
+  return rec;
+}
+
+}  // namespace detail
+
+/// The grasp records of one hypothesis of \p object: its demonstration \p g (none if the human
+/// hand did not reach the object) and each method's transfer of it to hand M, \p transfers in
+/// options.methods order (empty when the demonstration was not stable), in the order
+/// results_document sorts into.
+template <const auto& M>
+[[nodiscard]] std::vector<Json> hypothesis_records(
+    const ExperimentOptions& options, const GraspObject& object, const HumanGrasp& g,
+    const std::vector<const HandTransfer<M>*>& transfers) {
+  std::vector<Json> out;
+  if (!g.reached) return out;
+  const std::string& second_name = options.transfer.sim.second_judge_name;
+  const std::string seed = std::to_string(grasp_seed(options.seed, object.name, g.id));
   // A robot hand's grasp as the demonstration: its record in its own run (method "source").
-  out.push_back(source != nullptr ? source->record : std::move(rec));
+  if (const SourceDemonstration* source = find_source(options.sources, object.name, g.id))
+    out.push_back(source->record);
+  else
+    out.push_back(detail::human_record(options, object, g));
   for (const HandTransfer<M>* tp : transfers) {
     const HandTransfer<M>& t = *tp;
     Json r = Json::object();

@@ -268,7 +268,8 @@ TEST_CASE("a robot hand as the demonstrator: its stable transfers, read from its
   read_source_run(dir, {}, t);
   REQUIRE(t.sources.size() == sources.size());
   CHECK(t.source_hand == "barrett_bh8");
-  CHECK(t.source_results == (dir / "results.json").string());
+  const std::string file = std::filesystem::weakly_canonical(dir / "results.json").string();
+  CHECK(t.source_results == file);
   CHECK_NOTHROW(check_source_config(t, results_config(t, barrett.name.view())));
   for (std::size_t k = 0; k < sources.size(); ++k)
     CHECK(same_source(t.sources[k].grasp, describe_source(source_grasp(*sources[k]))));
@@ -307,7 +308,6 @@ TEST_CASE("a robot hand as the demonstrator: its stable transfers, read from its
   CHECK(result.at("objects").as_array()[0].at("stable_human").as_number() == demonstrations);
 
   // What it refuses, naming --source, the file and the field.
-  const std::string file = (dir / "results.json").string();
   const auto read_doc = [&](const Json& d) {
     detail::write_text_file(dir / "results.json", d.dump(0));
     ExperimentOptions o = barrett_options();
@@ -335,12 +335,66 @@ TEST_CASE("a robot hand as the demonstrator: its stable transfers, read from its
   without.set("grasps", Json(spoiled));
   CHECK_THROWS_WITH(read_doc(without),
                     "--source: " + file + ": " + at + ".source_grasp: expected an object");
-  spoiled = records;
-  Json configurations = Json::object();
-  spoiled[first].set("configurations", configurations);
-  without.set("grasps", Json(spoiled));
-  CHECK_THROWS_WITH(read_doc(without), "--source: " + file + ": " + at +
-                                           ".configurations: expected the closed configuration");
+  // Whatever the schema refuses (a record copied into this run's results must be sound).
+  const auto with_record = [&](const Json& record) {
+    Json::Array r = records;
+    r[first] = record;
+    Json d = doc;
+    d.set("grasps", Json(std::move(r)));
+    return d;
+  };
+  const std::string pointer = "/grasps/" + std::to_string(first);
+  // Whether reading d is refused by the schema at the field `field` of the first source's record.
+  const auto refused_at = [&](const Json& d, const std::string& field) {
+    std::string message;
+    try {
+      read_doc(d);
+    } catch (const invalid_argument& e) {
+      message = e.what();
+    }
+    return message.starts_with("--source: " + file + ": schema: " + pointer) &&
+           message.find(pointer + field) != std::string::npos;
+  };
+  Json record = records[first];
+  record.set("configurations", Json::object());
+  CHECK(refused_at(with_record(record), "/configurations"));
+  for (const double id : {2.5, -1.0, 4294967296.0}) {
+    record = records[first];
+    record.set("id", id);
+    CHECK(refused_at(with_record(record), "/id: "));
+  }
+  record = records[first];
+  record.set("object", 3);
+  CHECK(refused_at(with_record(record), "/object: expected string"));
+  // What the schema cannot say: the scene is the one grasp_transfer writes, beside the file.
+  const std::string id_text = std::to_string(static_cast<int>(records[first].at("id").as_number()));
+  record = records[first];
+  record.set("scene", "../../etc/passwd");
+  CHECK_THROWS_WITH(read_doc(with_record(record)), "--source: " + file + ": " + at +
+                                                       ".scene: expected \"scenes/bottle_" +
+                                                       id_text + "_topological.xml\"");
+  record = records[first];
+  Json grasp = record.at("source_grasp");
+  grasp.set("hand", "human_hand");
+  record.set("source_grasp", grasp);
+  CHECK_THROWS_WITH(
+      read_doc(with_record(record)),
+      "--source: " + file + ": " + at +
+          ".source_grasp.hand: \"human_hand\", but the run's hand is \"barrett_bh8\"");
+  Json twice = doc;
+  Json::Array doubled = records;
+  doubled.push_back(records[first]);
+  twice.set("grasps", Json(doubled));
+  CHECK_THROWS_WITH(read_doc(twice), "--source: " + file + ": grasps[" +
+                                         std::to_string(records.size()) + "]: bottle hypothesis " +
+                                         id_text + " by topological is given twice");
+  Json shard = doc;
+  Json config = doc.at("config");
+  config.set("shard", "2/2");
+  shard.set("config", config);
+  CHECK_THROWS_WITH(read_doc(shard), "--source: " + file +
+                                         ": config.shard: a shard of a run (2/2): merge its shards "
+                                         "first (grasp_transfer merge)");
   Json unstable = doc;
   spoiled = records;
   for (Json& r : spoiled) r.set("stable", false);
