@@ -157,48 +157,21 @@ if(NOT TOPOGRASP_SANITIZE)
                    -DSTATUS=2 -DCOPY_TO=${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_alone
                    -P ${PROJECT_SOURCE_DIR}/cmake/expect_failure.cmake)
 endif()
-# The transfer matrix (docs/results.md): a small run on grasp_transfer's demonstrations, the six
-# stable ones of the first 25 bottle hypotheses (seed 1), copies of four grasps, to every hand by
-# the fingertip and virtual-finger baselines, each cell counted raw and on the four distinct
-# grasps, each method paired with the first on the same grasps; bad arguments refused.
-add_test(NAME "app: transfer_matrix (small run)"
-         COMMAND transfer_matrix --objects bottle --max-hypotheses 25
-                 --methods fingertip,virtual_finger --quiet
-                 --out ${CMAKE_CURRENT_BINARY_DIR}/transfer_matrix_small)
-set_tests_properties("app: transfer_matrix (small run)" PROPERTIES
-                     PASS_REGULAR_EXPRESSION "human -> Shadow \\| bottle \\| virtual_finger \\| 6 \\| 6 \\|[^\n]*\\| [0-4]/4 / [0-4]/4 \\|.*\nAgainst fingertip.*\n\\| human -> Shadow \\| virtual_finger \\| [0-9]+ : [0-9]+, p = [^|]*\\| [0-9]+ : [0-9]+, p = [^|]*\\| [0-9]+ : [0-9]+, p = [^|]*\\| [0-9]+ : [0-9]+, p = [^|]*\\|")
-# Past a file-size limit the same run fails with a message and leaves that run's files as they
-# were (its outputs are staged and committed as one).
-add_test(NAME "app: transfer_matrix fails whole past a file-size limit"
-         COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:transfer_matrix>
-                 -DSOURCE=${CMAKE_CURRENT_BINARY_DIR}/transfer_matrix_small
-                 -DDIR=${CMAKE_CURRENT_BINARY_DIR}/transfer_matrix_file_limit
-                 -P ${CMAKE_CURRENT_SOURCE_DIR}/grasp_transfer/matrix/file_limit.cmake)
-set_tests_properties("app: transfer_matrix fails whole past a file-size limit" PROPERTIES
-                     DEPENDS "app: transfer_matrix (small run)" LABELS end_to_end)
-# The sanitizer build does not build transfer_matrix (apps/CMakeLists.txt): its refusals are
-# checked in the Release build with its end-to-end run.
-expect_rejected(transfer_matrix end_to_end "unknown object|--objects anvil|--objects: unknown object \"anvil\""
-                "a method that needs the arm|--methods closed_windings|--methods: unknown method \"closed_windings\""
-                "a repeated option|--jobs 2 --jobs 2|--jobs: given twice"
-                "a missing value|--out|--out: expected a value"
-                "bad jobs|--jobs 0|--jobs: expected 1 to 1024"
-                "negative hypotheses|--max-hypotheses -1|--max-hypotheses: expected >= 0"
-                "unknown hypothesis rule|--hypotheses grid|--hypotheses: unknown rule \"grid\""
-                "unknown closing|--closing loose|--closing: expected free, held or balanced, got \"loose\""
-                "a grip below the holding torques|--human-grip 0.5|--human-grip: expected a multiple of the human hand's holding torques in \\[1, 10\\]"
-                "unknown option|--hand allegro|unknown option \"--hand\""
-                "unwritable out|--out /proc/transfer_matrix|--out: cannot create the folder")
-# record_demonstrations is not built by the sanitizer build either.
+# Past a file-size limit a run into the small run's folder fails with a message and leaves that
+# run's files as they were (its outputs are staged and committed as one).
+add_test(NAME "app: grasp_transfer fails whole past a file-size limit"
+         COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:grasp_transfer>
+                 -DSOURCE=${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_small
+                 -DDIR=${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_file_limit
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/grasp_transfer/file_limit.cmake)
+set_tests_properties("app: grasp_transfer fails whole past a file-size limit" PROPERTIES
+                     DEPENDS "app: grasp_transfer (small run)" LABELS end_to_end)
+# record_demonstrations is not built by the sanitizer build: its refusals are checked in the
+# Release build with its end-to-end run.
 expect_rejected(record_demonstrations end_to_end
                 "a repeated option|--object can --count 1 --count 2|--count: given twice"
                 "an option as a value|--object --count|--object: expected a value"
                 "unknown object|--object anvil|--object: unknown object \"anvil\"")
-expect_refused_folder(transfer_matrix "a folder of other files without --force" ${bad}-matrix
-                      MKFILE=${bad}-matrix/notes.txt
-                      "--out: .* holds no matrix.json of transfer_matrix; use --force")
-set_tests_properties("app: transfer_matrix rejects a folder of other files without --force"
-                     PROPERTIES LABELS end_to_end)
 
 # The programs' runs that simulate grasps are the end-to-end tests (label end_to_end): they run
 # once, in the Release build of the README's test command. The sanitize preset leaves them out
@@ -210,7 +183,7 @@ set_tests_properties("app: grasp_transfer (small run)"
                      "app: grasp_transfer on YCB objects (small run)"
                      "app: record_demonstrations"
                      "app: grasp_transfer shards merged" "app: slurm job scripts"
-                     "app: transfer_matrix (small run)" PROPERTIES LABELS end_to_end)
+                     PROPERTIES LABELS end_to_end)
 add_test(NAME "app: grasp_transfer (smoke)"
          COMMAND grasp_transfer --max-hypotheses 1 --jobs 2 --quiet --figures
                  --out ${CMAKE_CURRENT_BINARY_DIR}/grasp_transfer_smoke)

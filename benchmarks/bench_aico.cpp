@@ -3,8 +3,8 @@
 // same algebra written the straightforward way with dynamic-size Eigen matrices (the baseline),
 // a full sweep with the transfer task set (collision, limits, posture, windings), a whole plan,
 // one topological grasp transfer as the experiment runs it (to the SDH on the arm, and to the
-// Allegro hand on a free base as transfer_matrix runs it), and the machine's Eigen GEMM rate
-// measured in the same run.
+// Allegro hand on a free base as grasp_transfer --hand allegro runs it), and the machine's Eigen
+// GEMM rate measured in the same run.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -233,7 +233,8 @@ void BM_transfer_topological_hammer(benchmark::State& state) {
 BENCHMARK(BM_transfer_topological_hammer)->Unit(benchmark::kMillisecond);
 
 // The same human grasp transferred to the Allegro hand on a free base (transfer_hand: 22
-// coordinates, three winding targets, the same T and sweeps), as transfer_matrix runs it.
+// coordinates, three winding targets, the same T and sweeps), as grasp_transfer --hand allegro runs
+// it.
 void BM_transfer_hand_topological_allegro(benchmark::State& state) {
   const GraspObject hammer = objects::hammer();
   const HumanGrasp g = demonstrate(hammer, box_hypotheses(hammer)[26], 26);

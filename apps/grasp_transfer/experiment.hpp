@@ -330,7 +330,8 @@ HandTransfer<M> experiment_transfer(TransferMethod method, const GraspObject& ob
 /// bad stability options (validate_stability_options, named "transfer.sim.stability.<option>"),
 /// a skipped hypothesis of an object that is not in the run; for sources (options.sources): with
 /// recorded demonstrations or the arm setting ("sources"), a method that transfers a human
-/// demonstration only ("methods"), a source whose object is not in the run or one given twice.
+/// demonstration only ("methods"), a source whose object is not in the run, a negative source id
+/// or a source given twice.
 template <const auto& M = models::schunk_sdh>
 void validate_experiment_options(const ExperimentOptions& options,
                                  const SecondJudge<M>& second = {}) {
@@ -392,6 +393,10 @@ void validate_experiment_options(const ExperimentOptions& options,
                        [&](const GraspObject& o) { return o.name == d.object; }))
         detail::throw_invalid_argument("sources[" + std::to_string(i) + "].object",
                                        "\"" + d.object + "\" is not an object of the run");
+      if (d.id < 0)
+        detail::throw_invalid_argument(
+            "sources[" + std::to_string(i) + "].id",
+            "expected >= 0 (a hypothesis id), got " + std::to_string(d.id));
       for (std::size_t j = 0; j < i; ++j)
         if (options.sources[j].object == d.object && options.sources[j].id == d.id)
           detail::throw_invalid_argument(

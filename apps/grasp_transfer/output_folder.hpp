@@ -75,13 +75,6 @@ inline constexpr OutputLayout grasp_transfer_layout{
     results_generator,
     {{{"scenes", true}, {"figures", true}, {"index.html", false}}}};
 
-/// transfer_matrix's output folder: matrix.json, matrix.md, index.html.
-inline constexpr OutputLayout transfer_matrix_layout{
-    "transfer_matrix",
-    "matrix.json",
-    "topograsp transfer_matrix",
-    {{{"matrix.md", false}, {"index.html", false}, {"", false}}}};
-
 namespace detail {
 
 // This host's name as the staging folders carry it (file_name_part; "host" if it cannot be read).
@@ -170,8 +163,7 @@ class OutputFolder {
   /// with \p keep_leftovers the staging folders of interrupted runs are kept instead (even with
   /// \p force) and listed by leftovers(), for the caller to take what it needs (grasp_transfer
   /// --resume reads their journals) before remove_leftovers(). \p layout names what the run owns
-  /// (grasp_transfer's by default: the files above; transfer_matrix_layout: matrix.json, matrix.md,
-  /// index.html).
+  /// (grasp_transfer's by default: the files above).
   explicit OutputFolder(std::filesystem::path dir, bool force = false,
                         std::string_view argument = "dir", bool keep_leftovers = false,
                         const OutputLayout& layout = grasp_transfer_layout)

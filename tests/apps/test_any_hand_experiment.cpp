@@ -413,8 +413,10 @@ TEST_CASE("a robot hand as the demonstrator: its stable transfers, read from its
 }
 #endif
 
-TEST_CASE("the experiment refuses sources with what transfers a human demonstration only",
-          "[grasp][experiment][source][bad-input]") {
+TEST_CASE(
+    "the experiment refuses sources with what transfers a human demonstration only, and bad "
+    "sources",
+    "[grasp][experiment][source][bad-input]") {
   ExperimentOptions c = barrett_options();
   c.sources.push_back({"bottle", 4, barrett_source(), Json(), ""});
   CHECK_NOTHROW(validate_experiment_options<barrett>(c));
@@ -440,4 +442,7 @@ TEST_CASE("the experiment refuses sources with what transfers a human demonstrat
   c.sources.back().object = "hammer";
   CHECK_THROWS_WITH(validate_experiment_options(c),
                     "sources[1].object: \"hammer\" is not an object of the run");
+  c.sources.back() = {"bottle", -3, barrett_source(), Json(), ""};
+  CHECK_THROWS_WITH(validate_experiment_options(c),
+                    "sources[1].id: expected >= 0 (a hypothesis id), got -3");
 }

@@ -4,7 +4,7 @@
 /// (the human hand, the SDH, an imported Allegro, ...) to any other on a free-floating base, by any
 /// method; transfer_hand_on_arm() by the topological method with the hand on the Schunk arm. The
 /// source's windings around the object become the target's winding targets (winding_targets).
-/// docs/transfer.md, "Any hand", states every rule; docs/results.md holds the transfer matrix that
+/// docs/transfer.md, "Any hand", states every rule; docs/results.md, "Any hand to any hand",
 /// measures them.
 #pragma once
 
