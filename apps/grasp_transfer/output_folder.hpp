@@ -58,22 +58,12 @@ inline constexpr int results_schema_version = 5;
 /// The name prefix of the staging folders inside an output folder.
 inline constexpr std::string_view output_staging_prefix = ".grasp_transfer-staging-";
 
-/// What a program owns in its output folder: its main file, which marks a complete run (written
-/// last, moved into place last, its "generator" naming the program), and the other files and
-/// folders it replaces as a whole.
-struct OutputLayout {
-  std::string_view program;                                 ///< the program's name, for messages
-  std::string_view main_file;                               ///< e.g. "results.json"
-  std::string_view generator;                               ///< the main file's "generator"
-  std::array<std::pair<std::string_view, bool>, 3> others;  ///< name, is a folder ("": none)
-};
-
-/// grasp_transfer's output folder: results.json, scenes/, figures/, index.html.
-inline constexpr OutputLayout grasp_transfer_layout{
-    "grasp_transfer",
-    "results.json",
-    results_generator,
-    {{{"scenes", true}, {"figures", true}, {"index.html", false}}}};
+/// What a run owns in its output folder, each replaced as a whole by commit(): results.json (the
+/// main file, which marks a complete run: written last, moved into place last), then scenes/,
+/// figures/ and index.html; and whether each is a folder.
+inline constexpr std::array<std::pair<std::string_view, bool>, 4> output_owned{
+    {{"results.json", false}, {"scenes", true}, {"figures", true}, {"index.html", false}}};
+inline constexpr std::string_view results_file = output_owned[0].first;
 
 namespace detail {
 
@@ -84,22 +74,16 @@ inline std::string staging_host_name() {
   return file_name_part(b);
 }
 
-// The name prefix of \p layout's staging folders: ".<program>-staging-".
-inline std::string staging_prefix(const OutputLayout& layout) {
-  return "." + std::string(layout.program) + "-staging-";
-}
-
 // The name of a new staging folder: prefix, host, process id, a unique token.
-inline std::string staging_folder_name(const OutputLayout& layout = grasp_transfer_layout) {
-  return staging_prefix(layout) + staging_host_name() + "-" +
+inline std::string staging_folder_name() {
+  return std::string(output_staging_prefix) + staging_host_name() + "-" +
          std::to_string(static_cast<long long>(::getpid())) + "-" + temporary_file_token();
 }
 
 // Whether the staging folder called \p name was left by a process of this host that has ended
 // (so it may be removed): false for a running process, another host, or a name not of this form.
-inline bool staging_folder_abandoned(std::string_view name,
-                                     const OutputLayout& layout = grasp_transfer_layout) {
-  name.remove_prefix(std::min(name.size(), staging_prefix(layout).size()));
+inline bool staging_folder_abandoned(std::string_view name) {
+  name.remove_prefix(std::min(name.size(), output_staging_prefix.size()));
   const std::string host = staging_host_name() + "-";
   if (!name.starts_with(host)) return false;
   name.remove_prefix(host.size());
@@ -112,13 +96,12 @@ inline bool staging_folder_abandoned(std::string_view name,
 
 }  // namespace detail
 
-/// Whether the file \p path is the main file of a run of \p layout's program: a JSON object whose
-/// "generator" is layout.generator, or (grasp_transfer's results.json from versions before that
-/// mark) a JSON object without a "generator" that has the "config" object and the "objects" and
-/// "grasps" arrays of the schema. False for anything else, including unreadable files and
-/// invalid JSON; never throws but std::bad_alloc.
-[[nodiscard]] inline bool is_run_output(const std::filesystem::path& path,
-                                        const OutputLayout& layout) {
+/// Whether the file \p path is a results.json written by grasp_transfer: a JSON object whose
+/// "generator" is results_generator, or (versions before that mark) a JSON object without a
+/// "generator" that has the "config" object and the "objects" and "grasps" arrays of the schema.
+/// False for anything else, including unreadable files and invalid JSON; never throws but
+/// std::bad_alloc.
+[[nodiscard]] inline bool is_grasp_transfer_results(const std::filesystem::path& path) {
   try {
     std::ifstream f(path, std::ios::binary);
     if (!f) return false;
@@ -126,20 +109,15 @@ inline bool staging_folder_abandoned(std::string_view name,
     const Json doc = Json::parse(text);
     if (!doc.is_object()) return false;
     if (doc.contains("generator"))
-      return doc.at("generator").is_string() && doc.at("generator").as_string() == layout.generator;
-    return layout.generator == results_generator && doc.contains("config") &&
-           doc.at("config").is_object() && doc.contains("objects") &&
+      return doc.at("generator").is_string() &&
+             doc.at("generator").as_string() == results_generator;
+    return doc.contains("config") && doc.at("config").is_object() && doc.contains("objects") &&
            doc.at("objects").is_array() && doc.contains("grasps") && doc.at("grasps").is_array();
   } catch (const std::bad_alloc&) {
     throw;
   } catch (...) {
     return false;
   }
-}
-
-/// Whether the file \p path is a results.json written by grasp_transfer (is_run_output).
-[[nodiscard]] inline bool is_grasp_transfer_results(const std::filesystem::path& path) {
-  return is_run_output(path, grasp_transfer_layout);
 }
 
 /// An output folder being written: the constructor checks the folder and makes the staging
@@ -162,12 +140,10 @@ class OutputFolder {
   /// finished first (finish_commit). With \p force every other staging folder is removed, but
   /// with \p keep_leftovers the staging folders of interrupted runs are kept instead (even with
   /// \p force) and listed by leftovers(), for the caller to take what it needs (grasp_transfer
-  /// --resume reads their journals) before remove_leftovers(). \p layout names what the run owns
-  /// (grasp_transfer's by default: the files above).
+  /// --resume reads their journals) before remove_leftovers().
   explicit OutputFolder(std::filesystem::path dir, bool force = false,
-                        std::string_view argument = "dir", bool keep_leftovers = false,
-                        const OutputLayout& layout = grasp_transfer_layout)
-      : dir_(std::move(dir)), argument_(argument), layout_(layout) {
+                        std::string_view argument = "dir", bool keep_leftovers = false)
+      : dir_(std::move(dir)), argument_(argument) {
     namespace fs = std::filesystem;
     const auto refuse = [&](const std::string& what) {
       detail::throw_invalid_argument(argument, what);
@@ -181,7 +157,7 @@ class OutputFolder {
       fs::create_directories(dir_, ec);
       if (ec) refuse("cannot create the folder " + shown + " (" + ec.message() + ")");
     }
-    for (const auto& [name, is_folder] : owned()) {
+    for (const auto& [name, is_folder] : output_owned) {
       const fs::path p = dir_ / name;
       const fs::file_status s = fs::status(p, ec);
       if (!fs::exists(s)) continue;
@@ -199,8 +175,7 @@ class OutputFolder {
     for (fs::directory_iterator c(dir_, ec); !ec && c != fs::directory_iterator();
          c.increment(ec)) {
       const std::string name = c->path().filename().string();
-      if (name.starts_with(detail::staging_prefix(layout_)) &&
-          detail::staging_folder_abandoned(name, layout_) &&
+      if (name.starts_with(output_staging_prefix) && detail::staging_folder_abandoned(name) &&
           fs::exists(c->path() / commit_marker_name, ec))
         interrupted.push_back(c->path());
     }
@@ -212,12 +187,12 @@ class OutputFolder {
     if (ec) refuse("cannot read the folder " + shown + " (" + ec.message() + ")");
     for (; it != fs::directory_iterator(); it.increment(ec)) {
       const std::string name = it->path().filename().string();
-      if (!name.starts_with(detail::staging_prefix(layout_))) {
+      if (!name.starts_with(output_staging_prefix)) {
         foreign = true;
         continue;
       }
       leftovers.push_back(it->path());
-      if (!detail::staging_folder_abandoned(name, layout_)) live = name;
+      if (!detail::staging_folder_abandoned(name)) live = name;
     }
     if (ec) refuse("cannot read the folder " + shown + " (" + ec.message() + ")");
     if (!live.empty() && !force)
@@ -225,21 +200,22 @@ class OutputFolder {
              "\", the staging folder of a run that is still going or ran on another host; give "
              "each run (each shard) its own output folder, or use --force if no other run "
              "writes there");
-    if (foreign && !force && leftovers.empty() && !is_run_output(dir_ / main_file(), layout_)) {
+    if (foreign && !force && leftovers.empty() && !is_grasp_transfer_results(dir_ / results_file)) {
       std::string replaced;
-      const auto entries = owned();
+      const auto& entries = output_owned;
       for (std::size_t i = 0; i < entries.size(); ++i)
         replaced += (i == 0                    ? ""
                      : i + 1 == entries.size() ? " and "
                                                : ", ") +
                     std::string(entries[i].first) + (entries[i].second ? "/" : "");
-      refuse(shown + " is not empty and holds no " + std::string(layout_.main_file) + " of " +
-             std::string(layout_.program) +
-             "; use --force to write into it: the run then replaces " + replaced + " there");
+      refuse(shown +
+             " is not empty and holds no results.json of grasp_transfer"
+             "; use --force to write into it: the run then replaces " +
+             replaced + " there");
     }
     leftovers_ = std::move(leftovers);
     if (!keep_leftovers) remove_leftovers();
-    staging_ = dir_ / detail::staging_folder_name(layout_);
+    staging_ = dir_ / detail::staging_folder_name();
     fs::create_directory(staging_, ec);
     if (ec) refuse("cannot write into " + shown + " (" + ec.message() + ")");
     try {
@@ -288,15 +264,6 @@ class OutputFolder {
 
   /// The output folder.
   [[nodiscard]] const std::filesystem::path& dir() const noexcept { return dir_; }
-  /// The run's main file (layout.main_file: results.json for grasp_transfer).
-  [[nodiscard]] std::string_view main_file() const noexcept { return layout_.main_file; }
-  /// The entries of DIR the run owns, the main file first, and whether each is a folder.
-  [[nodiscard]] std::vector<std::pair<std::string_view, bool>> owned() const {
-    std::vector<std::pair<std::string_view, bool>> out{{layout_.main_file, false}};
-    for (const auto& entry : layout_.others)
-      if (!entry.first.empty()) out.push_back(entry);
-    return out;
-  }
   /// Where the run writes its files (results.json, scenes/, figures/, index.html), inside dir().
   [[nodiscard]] const std::filesystem::path& staging() const noexcept { return staging_; }
   /// Whether commit() has succeeded.
@@ -317,7 +284,7 @@ class OutputFolder {
     committing_ = true;
     std::string staged;
     std::error_code ec;
-    for (const auto& [name, is_folder] : owned())
+    for (const auto& [name, is_folder] : output_owned)
       if (fs::exists(staging_ / name, ec)) staged += std::string(name) + "\n";
     try {
       detail::write_text_file(staging_ / commit_marker_name, staged);
@@ -354,8 +321,8 @@ class OutputFolder {
     const auto was_staged = [&](std::string_view name) {
       return std::find(staged.begin(), staged.end(), name) != staged.end();
     };
-    for (const auto& [name, is_folder] : owned()) {
-      if (name == main_file()) continue;
+    for (const auto& [name, is_folder] : output_owned) {
+      if (name == results_file) continue;
       const bool in_staging = fs::exists(staging / name, ec);
       if (in_staging || !was_staged(name)) {  // else it was moved in already
         fs::remove_all(dir_ / name, ec);
@@ -366,11 +333,11 @@ class OutputFolder {
         check("move into place", dir_ / name);
       }
     }
-    const fs::path main = dir_ / main_file();
-    if (fs::exists(staging / main_file(), ec)) {
-      fs::rename(staging / main_file(), main, ec);  // replaces the old one at once
+    const fs::path main = dir_ / results_file;
+    if (fs::exists(staging / results_file, ec)) {
+      fs::rename(staging / results_file, main, ec);  // replaces the old one at once
       check("move into place", main);
-    } else if (!was_staged(main_file())) {
+    } else if (!was_staged(results_file)) {
       fs::remove(main, ec);  // a run without a main file leaves none of an earlier run
       check("remove", main);
     }
@@ -380,7 +347,6 @@ class OutputFolder {
  private:
   std::filesystem::path dir_;
   std::string argument_;
-  OutputLayout layout_;
   std::filesystem::path staging_;
   std::vector<std::filesystem::path> leftovers_;
   bool committed_ = false;
