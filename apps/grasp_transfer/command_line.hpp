@@ -196,10 +196,12 @@ inline void parse_closing(std::string_view value, std::string_view option, Grasp
   set_closing(sim, value);
 }
 
-// --hypotheses' value: demonstrator or box.
+// --hypotheses' value: demonstrator, power or box.
 [[nodiscard]] inline HypothesisRule parse_hypothesis_rule(std::string_view value,
                                                           std::string_view option) {
-  return enum_from_name(value, {HypothesisRule::box, HypothesisRule::demonstrator}, option, "rule");
+  return enum_from_name(value,
+                        {HypothesisRule::box, HypothesisRule::demonstrator, HypothesisRule::power},
+                        option, "rule");
 }
 }  // namespace detail
 
@@ -554,7 +556,9 @@ options:
   --max-hypotheses M  only the first M hypotheses of each object (default 0: all)
   --hypotheses R   the grasp hypotheses of the planned demonstrations: demonstrator (default:
                    8 rolls per box face, each also jittered once in position, tilt and roll by a
-                   seeded rule; docs/evaluation.md) or box (the paper's: BADGr's 4 rolls per
+                   seeded rule; docs/evaluation.md), power (the power grip: the part's long
+                   axis laid across the palm's oblique band, near the centre of mass, 5 angles
+                   each way, each also jittered 3 times) or box (the paper's: BADGr's 4 rolls per
                    reachable box face)
   --closing C      balanced (default: every hand closes on the object held still, which is
                    then released for 0.25 s before the tests, and holds with torques whose

@@ -69,9 +69,12 @@ struct SourceDemonstration {
 enum class HypothesisRule : std::uint8_t {
   box,           ///< box_hypotheses(): BADGr's, 4 per reachable box face
   demonstrator,  ///< demonstrator_hypotheses(): 8 rolls per face, each also jittered once
+  power,         ///< power_grip_hypotheses(): the long axis across the palm's oblique band
 };
 [[nodiscard]] constexpr std::string_view to_string(HypothesisRule r) noexcept {
-  return r == HypothesisRule::demonstrator ? "demonstrator" : "box";
+  return r == HypothesisRule::demonstrator ? "demonstrator"
+         : r == HypothesisRule::power      ? "power"
+                                           : "box";
 }
 
 /// What to run.
@@ -109,8 +112,9 @@ struct ExperimentOptions {
   std::string source_results, source_hand, source_hash;
   Json source_config;
   /// How the planned demonstrations are made: box_hypotheses (BADGr's 4 per reachable box face,
-  /// the default) or demonstrator_hypotheses (8 rolls per face, each also jittered once,
-  /// grasp_transfer --hypotheses demonstrator).
+  /// the default), demonstrator_hypotheses (8 rolls per face, each also jittered once,
+  /// grasp_transfer --hypotheses demonstrator) or power_grip_hypotheses (the power grip's rolls,
+  /// --hypotheses power).
   HypothesisRule hypotheses = HypothesisRule::box;
   /// The arm setting (grasp_transfer --setting arm): each object fixed in front of the arm
   /// (arm_setting_object_pose(), TransferOptions::arm_object), every method's hand reached by
@@ -490,6 +494,8 @@ std::vector<ObjectResultOf<M>> detail::run_experiment_with(const ExperimentOptio
     if (options.demonstrations.empty() && options.sources.empty())
       hyps[oi] = options.hypotheses == HypothesisRule::demonstrator
                      ? demonstrator_hypotheses(options.objects[oi], options.seed)
+                 : options.hypotheses == HypothesisRule::power
+                     ? power_grip_hypotheses(options.objects[oi], options.seed)
                      : box_hypotheses(options.objects[oi]);
     for (const RecordedGrasp& r : options.demonstrations)
       if (r.grasp.object == options.objects[oi].name) recorded[oi].push_back(&r);

@@ -123,6 +123,8 @@ TEST_CASE("the options --hypotheses and --closing choose the demonstrations' rul
   CHECK(d.experiment.transfer.sim.close.balanced_hold);
   CHECK(d.experiment.transfer.sim.palm_first);
   CHECK(parse({"--hypotheses", "box"}).experiment.hypotheses == HypothesisRule::box);
+  CHECK(parse({"--hypotheses", "power"}).experiment.hypotheses == HypothesisRule::power);
+  CHECK(to_string(HypothesisRule::power) == "power");
   // held and balanced share the protocol; balanced also holds with balanced torques.
   for (const char* closing : {"held", "balanced"}) {
     INFO(closing);

@@ -479,6 +479,35 @@ TEST_CASE("shards split the hypotheses without overlap", "[grasp][experiment]") 
   CHECK(total == 4);
 }
 
+TEST_CASE("a run with the power grip (--hypotheses power) records each grip it made",
+          "[grasp][experiment]") {
+  ExperimentOptions c = small_options(1);
+  c.objects = {objects::bottle()};
+  c.methods = {TransferMethod::transplant};
+  c.hypotheses = HypothesisRule::power;
+  c.max_hypotheses = 0;
+  c.shard_index = 0;
+  c.shard_count = 80;  // ids 0, 80, 160, 240: four faces' first grips
+  const std::vector<ObjectResult> r = run_experiment(c);
+  const std::vector<GraspHypothesis> expected = power_grip_hypotheses(objects::bottle(), c.seed);
+  CHECK(r[0].hypotheses == 4);
+  const Json doc = results_json(c, r);
+  CHECK(doc.at("config").at("hypotheses").as_string() == "power");
+  int humans = 0;
+  for (const Json& g : doc.at("grasps").as_array()) {
+    if (g.at("method").as_string() != "human") continue;
+    ++humans;
+    const auto id = static_cast<std::size_t>(g.at("id").as_number());
+    REQUIRE(id < expected.size());
+    const Json& h = g.at("hypothesis");
+    CHECK(h.at("box").as_number() == expected[id].box);
+    CHECK(h.at("face").as_number() == expected[id].face);
+    CHECK(h.at("roll").as_number() == expected[id].roll);
+    CHECK(h.at("jitter_seed").is_null() == (expected[id].jitter_seed == 0));
+  }
+  CHECK(humans == 4);
+}
+
 TEST_CASE("the shuffled-windings control's other demonstration is chosen by a fixed order",
           "[grasp][experiment][controls]") {
   // Halfway round the object's hypotheses, then on, never itself.

@@ -140,3 +140,126 @@ TEST_CASE("demonstrator_hypotheses: 8 rolls per face, each jittered once within 
   v.max_tilt = -0.1;
   CHECK_THROWS_WITH(demonstrator_hypotheses(hammer, 1, v), Catch::StartsWith("variation.max_tilt"));
 }
+
+TEST_CASE("palm_angle: where an axis lies in the palm, either end, NaN end on",
+          "[grasp][hypotheses]") {
+  const Vec3 approach = Vec3::UnitX(), up = Vec3::UnitZ();
+  const Vec3 thumb = up.cross(approach);  // +y
+  CHECK(palm_angle(thumb, approach, up) == Approx(0.0).margin(1e-12));
+  CHECK(palm_angle(-thumb, approach, up) == Approx(0.0).margin(1e-12));
+  CHECK(palm_angle(up, approach, up) == Approx(0.5 * pi));
+  CHECK(palm_angle(-up, approach, up) == Approx(0.5 * pi));
+  CHECK(palm_angle((thumb + up).normalized(), approach, up) == Approx(deg(45.0)));
+  CHECK(palm_angle(-(thumb + up).normalized(), approach, up) == Approx(deg(45.0)));
+  CHECK(palm_angle((thumb - up).normalized(), approach, up) == Approx(deg(-45.0)));
+  CHECK(std::isnan(palm_angle(approach, approach, up)));
+  CHECK(std::isnan(palm_angle((approach + 0.2 * thumb).normalized(), approach, up)));
+}
+
+TEST_CASE("power_grip_hypotheses: the long axis in the palm's band, near the centre of mass",
+          "[grasp][hypotheses]") {
+  for (const GraspObject& object : {objects::hammer(), objects::bottle()}) {
+    CAPTURE(object.name);
+    const PowerGrip rule;
+    const std::vector<GraspHypothesis> h = power_grip_hypotheses(object, 1);
+    const Vec3 com = object.centre_of_mass();
+    const int per_face = 2 * rule.variation.rolls * (rule.variation.jittered + 1);
+    REQUIRE(!h.empty());
+    REQUIRE(h.size() % static_cast<std::size_t>(per_face) == 0);
+    int without_axis = 0;
+    for (std::size_t i = 0; i < h.size(); ++i) {
+      const GraspHypothesis& x = h[i];
+      const GraspHypothesis& first = h[i / static_cast<std::size_t>(per_face) * per_face];
+      CHECK(x.box == first.box);
+      CHECK(x.face == first.face);
+      const int roll = static_cast<int>(i) % per_face / (rule.variation.jittered + 1);
+      const int copy = static_cast<int>(i) % (rule.variation.jittered + 1);
+      CHECK(x.roll == roll);
+      CHECK(x.approach.norm() == Approx(1.0));
+      CHECK(std::abs(x.up.dot(x.approach)) < 1e-12);
+      CHECK((x.jitter_seed == 0) == (copy == 0));
+      if (copy != 0) continue;
+      // The nominal one: the face's centre, along its normal, the centre of mass near the line.
+      const GraspBox& box = object.boxes[static_cast<std::size_t>(x.box)];
+      const Vec3 off = com - x.centre;
+      CHECK((off - off.dot(x.approach) * x.approach).norm() <= rule.max_offset + 1e-12);
+      // The long axis: the box's longest side where it is 1.1 times the next, else the
+      // object's (the bottle's neck and shoulder: its axis, z).
+      std::array<double, 3> half = box.half;
+      std::sort(half.begin(), half.end());
+      const auto longest =
+          static_cast<int>(std::max_element(box.half.begin(), box.half.end()) - box.half.begin());
+      const bool own = half[2] >= rule.long_ratio * half[1];
+      if (!own) ++without_axis;
+      const Vec3 L = own ? Vec3(box.pose.rotation().col(longest)) : Vec3::UnitZ();
+      CHECK((own || object.name == "bottle"));
+      CHECK(std::abs(L.dot(x.approach)) < 1e-9);  // never the palm on an end
+      const int k = roll % rule.variation.rolls;
+      const double expected =
+          rule.band_low + (rule.band_high - rule.band_low) * k / (rule.variation.rolls - 1);
+      CHECK(palm_angle(L, x.approach, x.up) == Approx(expected).margin(1e-9));
+      // The end toward the thumb: the positive one for the first rolls.
+      const double toward = L.dot(x.up.cross(x.approach));
+      CHECK((roll < rule.variation.rolls ? toward > -1e-9 : toward < 1e-9));
+    }
+    if (object.name == "hammer") CHECK(without_axis == 0);
+    // Fewer faces than box_hypotheses() reaches: the ends and the faces far from the centre of
+    // mass are left out.
+    CHECK(h.size() / static_cast<std::size_t>(per_face) < box_hypotheses(object).size() / 4);
+  }
+  // The hammer: the handle's far end (its centre 0.2 m from the centre of mass) is not gripped.
+  const GraspObject hammer = objects::hammer();
+  for (const GraspHypothesis& x : power_grip_hypotheses(hammer, 1))
+    CHECK((x.centre - hammer.centre_of_mass()).norm() < 0.2);
+  // The ball has no long axis: every reachable face, rolled evenly, the first as
+  // box_hypotheses' turn 0.
+  const GraspObject ball = objects::ball();
+  const std::vector<GraspHypothesis> round = power_grip_hypotheses(ball, 1);
+  const std::vector<GraspHypothesis> ball_faces = box_hypotheses(ball);
+  REQUIRE(round.size() == ball_faces.size() / 4 * 40);
+  for (std::size_t i = 0; i < round.size(); i += 4) {
+    const GraspHypothesis& face = ball_faces[i / 40 * 4];
+    const double angle = 2.0 * pi * round[i].roll / 10;
+    const Mat3 R = ball.boxes[static_cast<std::size_t>(face.box)].pose.rotation();
+    const int u = (face.face / 2 + 1) % 3, v = (face.face / 2 + 2) % 3;
+    CHECK((round[i].up - (std::cos(angle) * R.col(u) + std::sin(angle) * R.col(v))).norm() < 1e-12);
+  }
+  // Deterministic; the seed moves only the jittered ones.
+  const std::vector<GraspHypothesis> a = power_grip_hypotheses(hammer, 1),
+                                     b = power_grip_hypotheses(hammer, 2);
+  CHECK((a[0].centre - b[0].centre).norm() == 0.0);
+  CHECK((a[1].centre - b[1].centre).norm() > 0.0);
+  // The oblique crease only (docs/evaluation.md's example): one angle, either end, 8 per face.
+  PowerGrip crease;
+  crease.band_low = crease.band_high = deg(45.0);
+  crease.variation.rolls = 1;
+  const std::vector<GraspHypothesis> oblique = power_grip_hypotheses(hammer, 1, crease);
+  CHECK(oblique.size() * 5 == a.size());
+  for (std::size_t i = 0; i < oblique.size(); i += 4) {
+    const GraspBox& box = hammer.boxes[static_cast<std::size_t>(oblique[i].box)];
+    const auto longest = std::max_element(box.half.begin(), box.half.end()) - box.half.begin();
+    CHECK(palm_angle(box.pose.rotation().col(longest), oblique[i].approach, oblique[i].up) ==
+          Approx(deg(45.0)).margin(1e-9));
+  }
+  PowerGrip rule;
+  rule.band_low = deg(50.0);
+  rule.band_high = deg(40.0);
+  CHECK_THROWS_WITH(power_grip_hypotheses(hammer, 1, rule), Catch::StartsWith("rule.band_low"));
+  rule = {};
+  rule.band_high = deg(100.0);
+  CHECK_THROWS_WITH(power_grip_hypotheses(hammer, 1, rule), Catch::StartsWith("rule.band_low"));
+  rule = {};
+  rule.max_offset = -0.01;
+  CHECK_THROWS_WITH(power_grip_hypotheses(hammer, 1, rule), Catch::StartsWith("rule.max_offset"));
+  rule = {};
+  rule.long_ratio = 0.5;
+  CHECK_THROWS_WITH(power_grip_hypotheses(hammer, 1, rule), Catch::StartsWith("rule.long_ratio"));
+  rule = {};
+  rule.variation.jittered = -1;
+  CHECK_THROWS_WITH(power_grip_hypotheses(hammer, 1, rule),
+                    Catch::StartsWith("variation.jittered"));
+  // Nothing within reach of the centre of mass: no hypothesis, no error.
+  rule = {};
+  rule.max_offset = 0.0;
+  CHECK(power_grip_hypotheses(hammer, 1, rule).size() < power_grip_hypotheses(hammer, 1).size());
+}
