@@ -8,6 +8,9 @@
 // (apps/grasp_transfer/command_line.hpp); each hand's run is compiled apart (program.hpp), and
 // grasp_transfer runs the program of a hand it does not hold, grasp_transfer-<hand> beside it.
 #include <spawn.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -449,6 +452,14 @@ int run_hands(const CommandLine& cli, std::span<const std::string_view> args,
 }  // namespace
 
 int main(int argc, char** argv) {
+#if defined(__GLIBC__)
+  // MuJoCo 2.2 allocates each judged grasp's model and data as large aligned blocks; glibc's
+  // heap cannot reuse those between the small allocations around them once its mmap threshold
+  // has risen past them, so a run grew by about a megabyte per grasp (docs/transfer.md,
+  // "Memory"). A fixed threshold keeps blocks of 1 MiB and more in their own mappings, returned
+  // to the system when freed. The program's choice, not the library's: it is process-wide.
+  (void)mallopt(M_MMAP_THRESHOLD, 1 << 20);
+#endif
 #ifdef SIGXFSZ
   // Past a file-size limit a write fails with EFBIG (a readable error, the previous run in DIR
   // untouched) instead of the signal ending the process.

@@ -48,6 +48,20 @@ TEST_CASE("the stability suite allocates per test, never per step", "[evaluation
   const long few = count(1), many = count(8);
   CHECK(few > 0);  // it does copy the scene
   CHECK(many == few);
+  // One working scene for its eight tests, reset by assignment, which reuses the scene's
+  // buffers: the suite allocates one copy of the scene and a few records, where one copy per
+  // test (8 copies) made a MuJoCo run's heap grow (docs/transfer.md, "Memory").
+  auto copy = scene;
+  const long before = test::allocations();
+  copy = scene;
+  const long assigned = test::allocations() - before;
+  {
+    const auto another = scene;
+  }
+  const long one_copy = test::allocations() - before - assigned;
+  CHECK(assigned == 0);
+  REQUIRE(one_copy > 0);
+  CHECK(few < 3 * one_copy);
 }
 
 TEST_CASE("the float stepper holds a box and a grasp", "[evaluation][float]") {

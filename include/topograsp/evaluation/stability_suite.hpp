@@ -352,8 +352,11 @@ template <GraspScene Scene>
     out.tests[i].test = static_cast<StabilityTest>(i);
     out.tests[i].name = to_string(out.tests[i].test);
   }
+  // One working scene, reset to the closing state before each test: copy assignment reuses
+  // its buffers (a MujocoScene's mjData), so a suite allocates one scene, not one per test.
+  Scene scene = closed;
   const auto shake = [&](const ShakeMotion& m, std::uint64_t seed, StabilityRecord& r) {
-    Scene scene = closed;
+    scene = closed;
     detail::ShakePath path(m, seed, start, pivot);
     detail::run_test(
         scene, m.steps, [&](Scene& s, int k) { s.set_hand_pose(path.pose(k)); }, reference, options,
@@ -372,7 +375,7 @@ template <GraspScene Scene>
   bool stopped = failed(0);
   for (int d = 0; d < 6 && !stopped; ++d) {
     const auto i = static_cast<std::size_t>(1 + d);
-    Scene scene = closed;
+    scene = closed;
     Vec3 local = Vec3::Zero();
     local[d / 2] = d % 2 == 0 ? 1.0 : -1.0;
     scene.set_gravity(magnitude * (start.linear() * local));
