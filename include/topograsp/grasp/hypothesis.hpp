@@ -109,6 +109,21 @@ inline void check_variation(const DemonstratorVariation& variation) {
   require_non_negative(variation.max_roll, "variation.max_roll");
 }
 
+// The plane of a box_hypotheses() face: its first and second axes (object frame) and the box's
+// half-extents along them; a roll angle is measured from u toward v.
+struct FacePlane {
+  Vec3 u, v;
+  double half_u, half_v;
+};
+
+inline FacePlane face_plane(const GraspObject& object, const GraspHypothesis& face) {
+  const GraspBox& box = object.boxes[static_cast<std::size_t>(face.box)];
+  const Mat3 R = box.pose.rotation();
+  const int axis = face.face / 2, u = (axis + 1) % 3, v = (axis + 2) % 3;
+  return {R.col(u), R.col(v), box.half[static_cast<std::size_t>(u)],
+          box.half[static_cast<std::size_t>(v)]};
+}
+
 // The hypothesis on \p face (a box_hypotheses() face, turn 0) rolled by \p angle about its
 // inward normal from the face's first axis (roll index \p roll), and, for copy > 0, jittered by
 // \p variation's amplitudes from its own seed (demonstrator_hypotheses() says how).
@@ -116,11 +131,7 @@ inline GraspHypothesis rolled_hypothesis(const GraspObject& object, const GraspH
                                          int roll, double angle, int copy, std::uint64_t seed,
                                          std::uint64_t name_hash,
                                          const DemonstratorVariation& variation) {
-  const GraspBox& box = object.boxes[static_cast<std::size_t>(face.box)];
-  const Mat3 R = box.pose.rotation();
-  const int axis = face.face / 2, u = (axis + 1) % 3, v = (axis + 2) % 3;
-  const double half_u = box.half[static_cast<std::size_t>(u)],
-               half_v = box.half[static_cast<std::size_t>(v)];
+  const auto [u, v, half_u, half_v] = face_plane(object, face);
   GraspHypothesis h = face;
   h.roll = roll;
   if (copy > 0) {
@@ -134,14 +145,14 @@ inline GraspHypothesis rolled_hypothesis(const GraspObject& object, const GraspH
                  sv = std::min(variation.max_shift, 0.5 * half_v);
     const double du = unit(rng) * su;  // one draw per statement: a fixed order
     const double dv = unit(rng) * sv;
-    h.centre += du * R.col(u) + dv * R.col(v);
+    h.centre += du * u + dv * v;
     const double tilt = 0.5 * (unit(rng) + 1.0) * variation.max_tilt, toward = turn(rng);
-    const Vec3 side = std::cos(toward) * R.col(u) + std::sin(toward) * R.col(v);
+    const Vec3 side = std::cos(toward) * u + std::sin(toward) * v;
     h.approach = (std::cos(tilt) * face.approach + std::sin(tilt) * side).normalized();
     angle += unit(rng) * variation.max_roll;
   }
   // Up: the face's first axis turned by the roll about the approach, made orthogonal.
-  const Vec3 up0 = std::cos(angle) * R.col(u) + std::sin(angle) * R.col(v);
+  const Vec3 up0 = std::cos(angle) * u + std::sin(angle) * v;
   h.up = (up0 - up0.dot(h.approach) * h.approach).normalized();
   h.turn = -1;
   h.face_half_width = std::abs(std::sin(angle)) * half_u + std::abs(std::cos(angle)) * half_v;
@@ -282,8 +293,7 @@ inline std::optional<Vec3> long_axis(const GraspObject& object, double ratio) {
     const Vec3 off = com - face.centre;
     if ((off - off.dot(face.approach) * face.approach).norm() > rule.max_offset) continue;
     const GraspBox& box = object.boxes[static_cast<std::size_t>(face.box)];
-    const Mat3 R = box.pose.rotation();
-    const int u = (face.face / 2 + 1) % 3, v = (face.face / 2 + 2) % 3;
+    const detail::FacePlane plane = detail::face_plane(object, face);
     std::optional<Vec3> long_axis = detail::long_axis(box, rule.long_ratio);
     if (!long_axis) long_axis = object_axis;
     if (long_axis) {  // laid in the face's plane; a face it meets end on is left out
@@ -301,7 +311,7 @@ inline std::optional<Vec3> long_axis(const GraspObject& object, double ratio) {
                                   : rule.band_low + (rule.band_high - rule.band_low) * k / (n - 1);
         const Vec3 L = (end == 0 ? 1.0 : -1.0) * *long_axis;
         const Vec3 up = std::sin(phi) * L + std::cos(phi) * face.approach.cross(L);
-        angle = std::atan2(up.dot(R.col(v)), up.dot(R.col(u)));
+        angle = std::atan2(up.dot(plane.v), up.dot(plane.u));
       }
       for (int copy = 0; copy <= rule.variation.jittered; ++copy)
         out.push_back(detail::rolled_hypothesis(object, face, roll, angle, copy, seed, name_hash,
