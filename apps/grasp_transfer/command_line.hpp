@@ -27,7 +27,7 @@ namespace topograsp {
 /// What the command line of grasp_transfer asks for.
 struct CommandLine {
   /// The experiment: objects and methods are filled (default hammer, bottle and the five
-  /// methods of Table I, in the order given); the hypotheses default to the demonstrator's and
+  /// methods of Table I, in the order given); the hypotheses default to the power grip's and
   /// the closing to the balanced hold (--hypotheses, --closing); every other field as parsed or
   /// its default.
   ExperimentOptions experiment;
@@ -231,11 +231,12 @@ inline void parse_closing(std::string_view value, std::string_view option, Grasp
                     : std::vector<std::string>(hands.begin(), hands.end());
   cli.hand = hand_names.front();
   cli.experiment.judge = mujoco_linked ? Judge::both : Judge::builtin;
-  // The program's protocol (issue 28; docs/evaluation.md, "The balanced hold"): the demonstrator's
-  // hypotheses, every hand closing on the held object and holding with balanced torques. The
+  // The program's protocol (issue 28; docs/evaluation.md, "The balanced hold" and "The power
+  // grip"): the power grip's hypotheses, every hand closing on the held object and holding with
+  // balanced torques. The
   // paper's is --hypotheses box --closing free (ExperimentOptions' and GraspSimOptions' own
   // defaults, which library callers get).
-  cli.experiment.hypotheses = HypothesisRule::demonstrator;
+  cli.experiment.hypotheses = HypothesisRule::power;
   detail::set_closing(cli.experiment.transfer.sim, "balanced");
   if (!args.empty() && args.front() == "merge") {
     cli.merge = true;
@@ -554,12 +555,12 @@ options:
   --resume         skip the hypotheses that an interrupted run into DIR with the same options
                    finished (its journal), keeping their results and scenes
   --max-hypotheses M  only the first M hypotheses of each object (default 0: all)
-  --hypotheses R   the grasp hypotheses of the planned demonstrations: demonstrator (default:
-                   8 rolls per box face, each also jittered once in position, tilt and roll by a
-                   seeded rule; docs/evaluation.md), power (the power grip: the part's long
-                   axis laid across the palm's oblique band, near the centre of mass, 5 angles
-                   each way, each also jittered 3 times) or box (the paper's: BADGr's 4 rolls per
-                   reachable box face)
+  --hypotheses R   the grasp hypotheses of the planned demonstrations: power (default: the
+                   power grip, the part's long axis laid across the palm's oblique band, near
+                   the centre of mass, 5 angles each way, each also jittered 3 times in
+                   position, tilt and roll by a seeded rule; docs/evaluation.md), demonstrator
+                   (8 rolls per box face, each also jittered once) or box (the paper's: BADGr's
+                   4 rolls per reachable box face)
   --closing C      balanced (default: every hand closes on the object held still, which is
                    then released for 0.25 s before the tests, and holds with torques whose
                    contact forces balance on the object; the human hand approaches palm first),

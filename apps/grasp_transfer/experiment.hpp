@@ -114,7 +114,7 @@ struct ExperimentOptions {
   /// How the planned demonstrations are made: box_hypotheses (BADGr's 4 per reachable box face,
   /// the default), demonstrator_hypotheses (8 rolls per face, each also jittered once,
   /// grasp_transfer --hypotheses demonstrator) or power_grip_hypotheses (the power grip's rolls,
-  /// --hypotheses power).
+  /// grasp_transfer's default).
   HypothesisRule hypotheses = HypothesisRule::box;
   /// The arm setting (grasp_transfer --setting arm): each object fixed in front of the arm
   /// (arm_setting_object_pose(), TransferOptions::arm_object), every method's hand reached by

@@ -116,14 +116,15 @@ TEST_CASE("the flag --every-test runs the whole stability suite on every grasp",
 
 TEST_CASE("the options --hypotheses and --closing choose the demonstrations' rule and closing",
           "[io][command_line]") {
-  // The default: the demonstrator's hypotheses, closed on the held object, balanced.
+  // The default: the power grip's hypotheses, closed on the held object, balanced.
   const CommandLine d = parse({});
-  CHECK(d.experiment.hypotheses == HypothesisRule::demonstrator);
+  CHECK(d.experiment.hypotheses == HypothesisRule::power);
   CHECK(d.experiment.transfer.sim.close.hold_object);
   CHECK(d.experiment.transfer.sim.close.balanced_hold);
   CHECK(d.experiment.transfer.sim.palm_first);
   CHECK(parse({"--hypotheses", "box"}).experiment.hypotheses == HypothesisRule::box);
-  CHECK(parse({"--hypotheses", "power"}).experiment.hypotheses == HypothesisRule::power);
+  CHECK(parse({"--hypotheses", "demonstrator"}).experiment.hypotheses ==
+        HypothesisRule::demonstrator);
   CHECK(to_string(HypothesisRule::power) == "power");
   // held and balanced share the protocol; balanced also holds with balanced torques.
   for (const char* closing : {"held", "balanced"}) {
