@@ -233,9 +233,8 @@ inline void parse_closing(std::string_view value, std::string_view option, Grasp
   cli.experiment.judge = mujoco_linked ? Judge::both : Judge::builtin;
   // The program's protocol (issue 28; docs/evaluation.md, "The balanced hold" and "The power
   // grip"): the power grip's hypotheses, every hand closing on the held object and holding with
-  // balanced torques. The
-  // paper's is --hypotheses box --closing free (ExperimentOptions' and GraspSimOptions' own
-  // defaults, which library callers get).
+  // balanced torques. The paper's is --hypotheses box --closing free (ExperimentOptions' and
+  // GraspSimOptions' own defaults, which library callers get).
   cli.experiment.hypotheses = HypothesisRule::power;
   detail::set_closing(cli.experiment.transfer.sim, "balanced");
   if (!args.empty() && args.front() == "merge") {

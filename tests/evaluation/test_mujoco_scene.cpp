@@ -197,10 +197,17 @@ TEST_CASE("MuJoCo scene gravity moves a free object along it; copies are indepen
     REQUIRE(twin.step() == Status::success);
   }
   CHECK(twin.object_com() == copy.object_com());
-  // Assignment copies too.
+  // Assignment copies too (reusing the target's mjData: the same model), and the assigned
+  // scene goes on exactly as its source, as stability_suite() relies on.
   twin = ms;
   CHECK(twin.object_com() == ms.object_com());
   CHECK(twin.gravity() == ms.gravity());
+  for (int i = 0; i < 5; ++i) {
+    REQUIRE(twin.step() == Status::success);
+    REQUIRE(ms.step() == Status::success);
+  }
+  CHECK(twin.object_com() == ms.object_com());
+  CHECK(twin.object_in_hand().isApprox(ms.object_in_hand(), 0.0));
 }
 
 TEST_CASE("the hand moves to the pose set; its welded base follows", "[evaluation][mujoco]") {
