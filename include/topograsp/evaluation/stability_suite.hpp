@@ -76,7 +76,7 @@ struct StabilityOptions {
   /// false (default): the suite stops at the first failed test among those that count (the shake,
   /// then the six directions in order): the tests after it are not run, and the hard shake runs
   /// only on a stable grasp. `stable` and `reason` are the same as with true (every test starts
-  /// from its own copy of the closing state), for about half the steps over a run where most
+  /// afresh from the closing state), for about half the steps over a run where most
   /// grasps fail. true: every test runs on every grasp, so an unstable grasp has all its records
   /// (which directions it fails, how far the object went in each).
   bool every_test = false;
@@ -305,7 +305,8 @@ inline void validate_stability_options(const StabilityOptions& options,
 /// Runs the stability suite on copies of \p closed, the scene at the moment closing ended (its
 /// gravity is the scene's), which it leaves as it is. The object's pose in the hand frame in
 /// \p closed is the reference of every test (no settling first: slip while settling counts).
-/// Each test starts from its own copy of \p closed and takes its steps at closed.time_step():
+/// Each test starts from the state of \p closed, assigned afresh to one working scene, and takes
+/// its steps at closed.time_step():
 ///  1. shake: options.shake (2 seeded random rotations of 20 to 60 degrees, 100 steps) about the
 ///     pivot, gravity as in the scene;
 ///  2. gravity_+x .. gravity_-z: the hand still, gravity of the scene's magnitude along +x, -x,
