@@ -302,7 +302,7 @@ inline void validate_stability_options(const StabilityOptions& options,
     detail::throw_invalid_argument(n + ".pivot", "expected palm or object");
 }
 
-/// Runs the stability suite on copies of \p closed, the scene at the moment closing ended (its
+/// Runs the stability suite on one copy of \p closed, the scene at the moment closing ended (its
 /// gravity is the scene's), which it leaves as it is. The object's pose in the hand frame in
 /// \p closed is the reference of every test (no settling first: slip while settling counts).
 /// Each test starts from the state of \p closed, assigned afresh to one working scene, and takes
